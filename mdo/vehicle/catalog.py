@@ -1,0 +1,138 @@
+"""The three aircraft of Clarke, Erhard & Alonso: GA-2P, GA-8P and TTW.
+
+Numbers from the paper's Table 1 (vehicle parameters) and Table 3 (initial
+design variables); what the paper leaves out (tails, fuselage, nacelles, wing
+position, airfoils) from SUAVE's X-57 Maxwell Mod II model
+(suavecode/SUAVE ``regression/scripts/Vehicles/X57_Maxwell_Mod2.py`` @ f551a684,
+the P2006T airframe; see ``mdo/vehicle/data/SOURCES.md``).
+
+Choices the paper does not state, and why:
+
+* **Rotor span positions** are fractions of the semispan (TTW's outer rotors at
+  1.00 are at the wing tip).  GA-2P's propellers at 0.23 sit at y = 1.31 m, so the
+  disks (R = 0.97 m) overlap the fuselage side (half width 0.53 m); the paper's
+  model has no fuselage-wake interaction and neither has ours.
+* **Design rpm** of the Adkins-Liebeck design is not given.  Table 3's text says
+  the optimized radius sits at the 0.6 tip-Mach limit (GA-2P: 1.12 m at
+  119.04 mph; GA-8P: 0.55 m at 138.58 mph; TTW: 1.38 m at 18.25 mph), and that
+  GA-8P's initial design violates it.  We fix the design rpm so that those optimum
+  radii are exactly at M_tip = 0.6 at the design speed (cruise altitude for the
+  GA aircraft, sea level for the TTW): 1665, 3345 and 1412 rpm.  GA-8P's initial
+  tip Mach is then 0.626 (> 0.6, as the paper reports).
+* **Design lift coefficient** of the blades: 0.7 (the paper optimizes it but does
+  not report it; SUAVE's X-57 propeller uses 0.8).
+* **GA-8P propellers** equally spaced at 0.25, 0.50, 0.75, 1.00 of the semispan
+  (the paper shows wing-tip propellers; spacing 1.425 m > D = 1.16 m).
+* **TTW**: S_ref = 21.7 m^2 is the sum of the two wings (each 10.85 m^2, AR 8.5,
+  the GA wing's aspect ratio as the paper says); "main wing" is the aft wing and
+  the "tandem wing" the forward one (the paper: "the forward tandem wing").
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from ..core import units as u
+from ..core.atmosphere import speed_of_sound
+from .config import BatteryConfig, FuselageConfig, RotorGroupConfig, VehicleConfig, WingConfig
+
+__all__ = ["ga2p", "ga8p", "ttw", "VEHICLES", "design_rpm_for_tip_mach"]
+
+GA_SECTIONS = (0.0, 0.25, 0.5, 0.75, 1.0)
+
+# Mass calibration (see mass.py): one factor on all structure, systems and propulsion
+# hardware terms (not battery, not payload).  1.16 brings the GA-2P build-up to Table 1's
+# 3549 lb (the raw regressions give 3250 lb); the same factor then *predicts* GA-8P's
+# 3622 lb to about 1 %.  The TTW's airframe in the paper is far lighter than GA
+# regressions give (raw 5997 lb vs 4850 lb), so it gets its own factor 0.70, of the
+# size of Raymer's composite-structure factors (Table 15.4) combined with lighter
+# eVTOL motors; it is a calibration, stated as such.
+GA_AIRFRAME_CALIBRATION = 1.16
+TTW_AIRFRAME_CALIBRATION = 0.70
+
+
+def design_rpm_for_tip_mach(radius_m, speed_mps, altitude_m, tip_mach=0.6) -> float:
+    """rpm at which the helical tip Mach number sqrt((Omega R)^2 + V^2)/a equals ``tip_mach``."""
+    a = float(speed_of_sound(altitude_m))
+    return float(np.sqrt((tip_mach * a) ** 2 - speed_mps ** 2) / radius_m / u.RPM)
+
+
+def _ga_airframe():
+    main = WingConfig("main_wing", span_m=11.4, area_m2=14.76, taper=0.70, section_eta=GA_SECTIONS,
+                      twist_deg=(3.00, 2.75, 2.50, 2.25, 2.00), airfoil="NACA_63_412",
+                      thickness_to_chord=0.12, root_le_x_m=2.93, root_z_m=1.01)
+    htail = WingConfig("horizontal_tail", span_m=3.3, area_m2=2.54, taper=1.0, section_eta=(0.0, 1.0),
+                       twist_deg=(0.0, 0.0), airfoil="NACA_0012", thickness_to_chord=0.12,
+                       root_le_x_m=7.7, root_z_m=0.25)
+    vtail = WingConfig("vertical_tail", span_m=1.854, area_m2=2.258, taper=0.6858 / 1.6764,
+                       section_eta=(0.0, 1.0), twist_deg=(0.0, 0.0), airfoil="NACA_0012",
+                       thickness_to_chord=0.12, sweep_quarter_chord_deg=25.0, root_le_x_m=6.75,
+                       root_z_m=0.623, vertical=True)
+    fuselage = FuselageConfig(length_m=8.28, width_m=42 * u.INCH, height_m=62 * u.INCH,
+                              wetted_area_m2=30000 * u.INCH ** 2, tail_arm_m=4.66)
+    return main, htail, vtail, fuselage
+
+
+def ga2p(rotation: str = "inboard_up") -> VehicleConfig:
+    """GA-2P: the X-57 Mod II airframe with two 3-bladed propellers (Table 1, Table 3 initial)."""
+    main, htail, vtail, fus = _ga_airframe()
+    props = RotorGroupConfig(
+        "propellers", wings=("main_wing",), span_eta=(0.23,), blades=3, radius_m=0.97,
+        design_thrust_N=900.0, design_speed_mps=135 * u.MPH, design_cl=0.7,
+        design_rpm=round(design_rpm_for_tip_mach(1.12, 119.04 * u.MPH, 2500 * u.FT)),
+        design_altitude_m=2500 * u.FT, motor_rated_power_W=52.7e3, airfoil="NACA_4412",
+        x_ahead_of_le_m=0.93, z_below_wing_m=0.226, rotation=rotation)
+    return VehicleConfig(
+        "GA-2P", "airplane", wings=(main, htail, vtail), rotor_groups=(props,), fuselage=fus,
+        battery=BatteryConfig(120, 80), togw_reference_kg=3549 * u.LB,
+        mass_inputs={"airframe_calibration": GA_AIRFRAME_CALIBRATION, "nacelle_wetted_area_m2": 4.5, "main_gear_length_in": 24.0,
+                     "nose_gear_length_in": 20.0, "uninstalled_avionics_lb": 40.0},
+        notes=("X-57 Mod II airframe (P2006T wing and tails) per SUAVE's model; "
+               "nacelle 2 m long, 42 in diameter (SUAVE), wetted ~4.5 m^2 each.",))
+
+
+def ga8p(rotation: str = "inboard_up") -> VehicleConfig:
+    """GA-8P: the GA-2P airframe with eight 5-bladed propellers, equally spaced."""
+    main, htail, vtail, fus = _ga_airframe()
+    props = RotorGroupConfig(
+        "propellers", wings=("main_wing",), span_eta=(0.25, 0.5, 0.75, 1.0), blades=5, radius_m=0.58,
+        design_thrust_N=350.0, design_speed_mps=130 * u.MPH, design_cl=0.7,
+        design_rpm=round(design_rpm_for_tip_mach(0.55, 138.58 * u.MPH, 2500 * u.FT)),
+        design_altitude_m=2500 * u.FT, motor_rated_power_W=25.19e3, airfoil="NACA_4412",
+        x_ahead_of_le_m=0.56, z_below_wing_m=0.0, rotation=rotation)
+    return VehicleConfig(
+        "GA-8P", "airplane", wings=(main, htail, vtail), rotor_groups=(props,), fuselage=fus,
+        battery=BatteryConfig(120, 80), togw_reference_kg=3622 * u.LB,
+        mass_inputs={"airframe_calibration": GA_AIRFRAME_CALIBRATION, "nacelle_wetted_area_m2": 1.2, "main_gear_length_in": 24.0,
+                     "nose_gear_length_in": 20.0, "uninstalled_avionics_lb": 40.0},
+        notes=("Nacelles scaled to the 25 kW motors: ~1.2 m^2 wetted each.",))
+
+
+def ttw(rotation: str = "inboard_up") -> VehicleConfig:
+    """TTW: tandem tilt-wing eVTOL with eight 3-bladed rotors on two tilting wings."""
+    sections = GA_SECTIONS
+    tandem = WingConfig("tandem_wing", span_m=9.6, area_m2=10.85, taper=1.0, section_eta=sections,
+                        twist_deg=(4.0, 3.0, 2.0, 1.0, 0.0), airfoil="NACA_63_412",
+                        thickness_to_chord=0.12, root_le_x_m=0.6, root_z_m=0.4, tilting=True)
+    main = WingConfig("main_wing", span_m=9.6, area_m2=10.85, taper=1.0, section_eta=sections,
+                      twist_deg=(4.0, 3.0, 2.0, 1.0, 0.0), airfoil="NACA_63_412",
+                      thickness_to_chord=0.12, root_le_x_m=4.6, root_z_m=1.6, tilting=True)
+    fin = WingConfig("vertical_tail", span_m=1.2, area_m2=1.2, taper=0.6, section_eta=(0.0, 1.0),
+                     twist_deg=(0.0, 0.0), airfoil="NACA_0012", thickness_to_chord=0.12,
+                     sweep_quarter_chord_deg=25.0, root_le_x_m=4.9, root_z_m=1.0, vertical=True)
+    rotors = RotorGroupConfig(
+        "rotors", wings=("main_wing", "tandem_wing"), span_eta=(0.38, 1.0), blades=3, radius_m=1.2,
+        design_thrust_N=5395.5, design_speed_mps=22.36 * u.MPH, design_cl=0.7,
+        design_rpm=round(design_rpm_for_tip_mach(1.38, 18.253 * u.MPH, 0.0)),
+        design_altitude_m=0.0, motor_rated_power_W=100e3, airfoil="NACA_4412",
+        x_ahead_of_le_m=0.6, z_below_wing_m=0.0, rotation=rotation)
+    fus = FuselageConfig(length_m=6.1, width_m=1.3, height_m=1.5, wetted_area_m2=20.0, tail_arm_m=4.0)
+    return VehicleConfig(
+        "TTW", "tilt_wing", wings=(main, tandem, fin), rotor_groups=(rotors,), fuselage=fus,
+        battery=BatteryConfig(150, 120), togw_reference_kg=4850 * u.LB,
+        mass_inputs={"airframe_calibration": TTW_AIRFRAME_CALIBRATION, "nacelle_wetted_area_m2": 1.5, "main_gear_length_in": 12.0,
+                     "nose_gear_length_in": 12.0, "uninstalled_avionics_lb": 60.0},
+        notes=("Tilt-wing layout (wing positions, fuselage size, fin) is ours: the paper gives only "
+               "length 6.1 m, span 9.6 m per wing, S_ref 21.7 m^2.",))
+
+
+VEHICLES = {"ga2p": ga2p, "ga8p": ga8p, "ttw": ttw}

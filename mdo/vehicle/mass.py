@@ -1,0 +1,226 @@
+"""Mass build-up that responds to the design variables.
+
+Every term is a smooth closed form that accepts numbers or CasADi expressions, so
+that span, taper, rotor radius and the take-off gross weight itself can be NLP
+variables.  Structural terms depend on the design gross weight ``W_dg``; the
+build-up is therefore an implicit equation ``TOGW = sum(terms(TOGW))``, solved by
+fixed-point iteration in analysis (``solve_togw``) and posed as one residual in
+the NLP (``togw_residual``).
+
+Sources (statistical regressions; the units of the original correlations are
+pounds, feet, square feet, lb/ft^2, horsepower and are converted here at the edges):
+
+* Raymer, *Aircraft Design: A Conceptual Approach*, 6th ed., Sec. 15.3.3, general
+  aviation weights (Eqs. 15.46-15.58): wing, horizontal and vertical tail,
+  fuselage, main and nose landing gear, flight controls, avionics, electrical,
+  furnishings.
+* Johnson, *NDARC Theory Manual* (NASA TM 2017-219646?), motor weight for high
+  torque electric motors: ``W_lb = 0.3928 Q_ftlb^0.8587`` (p. 213).
+* Roskam, *Airplane Design* Part V (General Dynamics propeller method):
+  ``W_lb = K_p N_p N_bl^0.391 (D_ft P_shp / (1000 N_p))^0.782``, K_p = 31.92.
+* Battery: cells x 48 g (Panasonic 18650 NMC of the paper) x (1 + packaging).
+* Payload: 4 passengers x 200 lb (FAA AC 120-27F standard summer adult with
+  personal items).
+
+Electric-aircraft terms not covered by those references (nacelle structure,
+power electronics, the tilt mechanism of a tilt wing) are simple specific-mass
+assumptions listed in ``ASSUMPTIONS``; they are small and reported as separate
+terms in ``results/<vehicle>/mass.md``.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..core import units as u
+from ..core.smooth import xp
+from .config import VehicleConfig, WingConfig, replace
+
+__all__ = ["ASSUMPTIONS", "MassDesign", "mass_terms", "total_mass", "solve_togw",
+           "togw_residual", "mass_table_markdown"]
+
+ASSUMPTIONS = {
+    "nacelle_areal_mass_kgpm2": 3.0,      # composite cowl + frames per wetted m^2 (assumption)
+    "esc_specific_power_Wpkg": 15000.0,   # motor controllers, kW/kg class of 2020 inverters (assumption)
+    "tilt_mechanism_fraction": 0.08,      # of the tilting mass (wings + rotors + motors) (assumption)
+    "wing_fuel_weight_lb": 1.0,           # Raymer's W_fw: no fuel in an electric wing (0 would zero the term)
+}
+
+
+@dataclass
+class MassDesign:
+    """The design quantities the build-up responds to (numbers or CasADi expressions).
+
+    ``wing_span_m[name]``, ``wing_taper[name]`` per lifting surface (areas are held
+    at their configured values, as in Eq. 7), ``rotor_radius_m[group]``.
+    """
+    wing_span_m: dict
+    wing_taper: dict
+    rotor_radius_m: dict
+
+    @classmethod
+    def baseline(cls, cfg: VehicleConfig) -> "MassDesign":
+        return cls({w.name: w.span_m for w in cfg.wings}, {w.name: w.taper for w in cfg.wings},
+                   {g.name: g.radius_m for g in cfg.rotor_groups})
+
+
+def _q_cruise_psf(cfg: VehicleConfig) -> float:
+    from ..core.atmosphere import density
+    q = 0.5 * density(cfg.cruise_altitude_m) * cfg.cruise_speed_mps ** 2
+    return q / (u.LBF / u.FT ** 2)
+
+
+def _wing_lb(w: WingConfig, span_m, taper, nz_wdg_lb, q_psf):
+    """Raymer Eq. 15.46 (GA wing)."""
+    lib = xp(span_m, taper)
+    S_ft2 = w.area_m2 / u.FT ** 2
+    AR = span_m ** 2 / w.area_m2
+    cos_sw = np.cos(np.radians(w.sweep_quarter_chord_deg))
+    return (0.036 * S_ft2 ** 0.758 * ASSUMPTIONS["wing_fuel_weight_lb"] ** 0.0035
+            * (AR / cos_sw ** 2) ** 0.6 * q_psf ** 0.006 * taper ** 0.04
+            * (100 * w.thickness_to_chord / cos_sw) ** -0.3 * nz_wdg_lb ** 0.49)
+
+
+def _htail_lb(w: WingConfig, nz_wdg_lb, q_psf):
+    """Raymer Eq. 15.47."""
+    S = w.area_m2 / u.FT ** 2
+    cos_sw = np.cos(np.radians(w.sweep_quarter_chord_deg))
+    return (0.016 * nz_wdg_lb ** 0.414 * q_psf ** 0.168 * S ** 0.896
+            * (100 * w.thickness_to_chord / cos_sw) ** -0.12
+            * (w.aspect_ratio / cos_sw ** 2) ** 0.043 * w.taper ** -0.02)
+
+
+def _vtail_lb(w: WingConfig, nz_wdg_lb, q_psf, t_tail=0.0):
+    """Raymer Eq. 15.48 (the fin's ``span_m`` is its height, ``area_m2`` its area)."""
+    S = w.area_m2 / u.FT ** 2
+    cos_sw = np.cos(np.radians(w.sweep_quarter_chord_deg))
+    AR = w.span_m ** 2 / w.area_m2
+    return (0.073 * (1 + 0.2 * t_tail) * nz_wdg_lb ** 0.376 * q_psf ** 0.122 * S ** 0.873
+            * (100 * w.thickness_to_chord / cos_sw) ** -0.49 * (AR / cos_sw ** 2) ** 0.357
+            * w.taper ** 0.039)
+
+
+def mass_terms(cfg: VehicleConfig, togw_kg, design: MassDesign | None = None) -> dict:
+    """All mass terms [kg] for gross weight ``togw_kg`` (number or expression).
+
+    Returns an ordered dict name -> mass; ``total_mass`` sums it.
+    """
+    d = design or MassDesign.baseline(cfg)
+    mi = {"main_gear_length_in": 24.0, "nose_gear_length_in": 20.0, "uninstalled_avionics_lb": 40.0,
+          "gear_load_factor": 4.5, "nacelle_wetted_area_m2": 0.0}
+    mi.update(cfg.mass_inputs)
+    W_lb = togw_kg / u.LB
+    nz_w = cfg.ultimate_load_factor * W_lb
+    q = _q_cruise_psf(cfg)
+    terms = {}
+    lifting = [w for w in cfg.wings if not w.vertical]
+    for i, w in enumerate(lifting):
+        if i == 0 or w.tilting or w.name.startswith("tandem"):
+            terms[f"wing: {w.name}"] = _wing_lb(w, d.wing_span_m.get(w.name, w.span_m),
+                                               d.wing_taper.get(w.name, w.taper), nz_w, q) * u.LB
+        else:
+            terms[f"horizontal tail: {w.name}"] = _htail_lb(w, nz_w, q) * u.LB
+    for w in cfg.wings:
+        if w.vertical:
+            terms[f"vertical tail: {w.name}"] = _vtail_lb(w, nz_w, q) * u.LB
+    f = cfg.fuselage
+    S_f = f.wetted_area_m2 / u.FT ** 2
+    fineness = f.length_m / np.sqrt(f.width_m * f.height_m)
+    terms["fuselage"] = (0.052 * S_f ** 1.086 * nz_w ** 0.177 * (f.tail_arm_m / u.FT) ** -0.051
+                         * fineness ** -0.072 * q ** 0.241) * u.LB
+    nl_w = mi["gear_load_factor"] * W_lb
+    terms["main landing gear"] = 0.095 * nl_w ** 0.768 * (mi["main_gear_length_in"] / 12) ** 0.409 * u.LB
+    terms["nose landing gear"] = 0.125 * nl_w ** 0.566 * (mi["nose_gear_length_in"] / 12) ** 0.845 * u.LB
+    span_main = d.wing_span_m.get(cfg.main_wing.name, cfg.main_wing.span_m)
+    terms["flight controls"] = (0.053 * (f.length_m / u.FT) ** 1.536 * (span_main / u.FT) ** 0.371
+                                * (nz_w * 1e-4) ** 0.80) * u.LB
+    w_av = 2.117 * mi["uninstalled_avionics_lb"] ** 0.933
+    terms["avionics"] = w_av * u.LB
+    terms["electrical"] = 12.57 * w_av ** 0.51 * u.LB
+    terms["furnishings"] = (0.0582 * W_lb - 65.0) * u.LB
+    tilting_mass = 0.0
+    for g in cfg.rotor_groups:
+        R = d.rotor_radius_m.get(g.name, g.radius_m)
+        omega = g.design_rpm * u.RPM
+        torque_ftlb = (g.motor_rated_power_W / omega) / (u.LBF * u.FT)
+        m_motor = g.count * 0.3928 * torque_ftlb ** 0.8587 * u.LB
+        D_ft = 2 * R / u.FT
+        P_shp = g.motor_rated_power_W / u.HP
+        m_prop = g.count * 31.92 * g.blades ** 0.391 * (D_ft * P_shp / 1000.0) ** 0.782 * u.LB
+        m_esc = g.count * g.motor_rated_power_W / ASSUMPTIONS["esc_specific_power_Wpkg"]
+        terms[f"motors: {g.name} ({g.count})"] = m_motor
+        terms[f"propellers: {g.name} ({g.count})"] = m_prop
+        terms[f"motor controllers: {g.name} ({g.count})"] = m_esc
+        if any(cfg.wing(wn).tilting for wn in g.wings):
+            tilting_mass = tilting_mass + m_motor + m_prop
+    if mi["nacelle_wetted_area_m2"]:
+        n_nac = sum(g.count for g in cfg.rotor_groups)
+        terms["nacelles"] = n_nac * mi["nacelle_wetted_area_m2"] * ASSUMPTIONS["nacelle_areal_mass_kgpm2"]
+    if cfg.kind == "tilt_wing":
+        wings_mass = sum(v for k, v in terms.items() if k.startswith("wing:"))
+        terms["tilt mechanism"] = ASSUMPTIONS["tilt_mechanism_fraction"] * (tilting_mass + wings_mass)
+    f_cal = mi.get("airframe_calibration", 1.0)
+    if f_cal != 1.0:
+        for k in list(terms):
+            terms[k] = f_cal * terms[k]
+    b = cfg.battery
+    terms[f"battery ({b.cells_series}s x {b.cells_parallel}p cells)"] = \
+        b.cells * b.cell_mass_kg * (1.0 + b.packaging_fraction)
+    terms[f"payload ({cfg.passengers} passengers)"] = cfg.passengers * cfg.passenger_mass_kg
+    return terms
+
+
+def total_mass(cfg: VehicleConfig, togw_kg, design: MassDesign | None = None):
+    terms = mass_terms(cfg, togw_kg, design)
+    total = 0.0
+    for v in terms.values():
+        total = total + v
+    return total
+
+
+def togw_residual(cfg: VehicleConfig, togw_kg, design: MassDesign | None = None):
+    """``TOGW - sum(terms(TOGW))`` [kg]: zero at a consistent gross weight."""
+    return togw_kg - total_mass(cfg, togw_kg, design)
+
+
+def solve_togw(cfg: VehicleConfig, design: MassDesign | None = None, tol_kg: float = 1e-6) -> float:
+    """Consistent gross weight by fixed-point iteration (contracts: d(sum)/dW ~ 0.2)."""
+    W = cfg.togw_reference_kg or 1500.0
+    for _ in range(200):
+        W_new = float(total_mass(cfg, W, design))
+        if abs(W_new - W) < tol_kg:
+            return W_new
+        W = W_new
+    raise RuntimeError(f"{cfg.name}: gross weight iteration did not converge (last {W:.3f} kg)")
+
+
+def mass_table_markdown(cfg: VehicleConfig, design: MassDesign | None = None) -> str:
+    """The build-up as a markdown table, with the paper's TOGW for comparison."""
+    W = solve_togw(cfg, design)
+    terms = mass_terms(cfg, W, design)
+    f_cal = cfg.mass_inputs.get("airframe_calibration", 1.0)
+    raw_cfg = replace(cfg, mass_inputs={**cfg.mass_inputs, "airframe_calibration": 1.0})
+    W_raw = solve_togw(raw_cfg, design)
+    lines = [f"# {cfg.name}: mass build-up", "",
+             "| term | mass (kg) | mass (lb) | fraction |", "|---|---:|---:|---:|"]
+    for k, v in terms.items():
+        v = float(v)
+        lines.append(f"| {k} | {v:.1f} | {v / u.LB:.1f} | {v / W:.3f} |")
+    lines.append(f"| **take-off gross weight** | **{W:.1f}** | **{W / u.LB:.1f}** | 1.000 |")
+    if cfg.togw_reference_kg:
+        ref = cfg.togw_reference_kg
+        lines += ["", f"Paper (Table 1): {ref / u.LB:.0f} lb = {ref:.1f} kg; "
+                  f"difference {100 * (W - ref) / ref:+.2f} %."]
+    lines += ["", f"Airframe calibration factor {f_cal:g} multiplies every term except battery and "
+              f"payload. Without it the regressions give TOGW = {W_raw:.1f} kg = {W_raw / u.LB:.0f} lb"
+              + (f" ({100 * (W_raw - cfg.togw_reference_kg) / cfg.togw_reference_kg:+.1f} % from Table 1)."
+                 if cfg.togw_reference_kg else ".")]
+    lines += ["", "Sources: Raymer 6th ed. Sec. 15.3.3 (GA structure and systems), NDARC (motors), "
+              "Roskam Part V (propellers), cell count x 48 g (battery), 4 x 200 lb (payload). "
+              "Assumptions: " + ", ".join(f"{k} = {v}" for k, v in ASSUMPTIONS.items()) + ".",
+              "Inputs specific to this vehicle: " + ", ".join(f"{k} = {v}" for k, v in cfg.mass_inputs.items())
+              + "."]
+    if cfg.notes:
+        lines += ["", "Notes:"] + [f"- {n}" for n in cfg.notes]
+    return "\n".join(lines) + "\n"
