@@ -60,6 +60,10 @@ def _cmd_run(args) -> int:
     for k, v in sol.summary_values().items():
         print(f"  {k} = {v}")
     print(f"  results in {out}")
+    if sol.status == "Interrupted_By_User":
+        print(f"mdo: interrupted; log and last iterate kept in {out}", file=sys.stderr)
+        print(sol.violation_report(), file=sys.stderr)
+        return 130
     if not sol.success:
         print(f"mdo: solve did not converge ({sol.status}); log and last iterate kept in {out}",
               file=sys.stderr)

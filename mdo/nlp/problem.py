@@ -297,19 +297,29 @@ class Problem:
         self.opti.solver("ipopt", plugin, ipopt)
 
         history = {"iter": [], "objective": [], "inf_pr": [], "inf_du": []}
-        interrupted = False
+        interrupted = []
+
+        def on_sigint(signum, frame):
+            # CasADi notices the pending KeyboardInterrupt inside IPOPT's callback and
+            # stops with NonIpopt_Exception_Thrown; remember that it was the user.
+            interrupted.append(True)
+            signal.default_int_handler(signum, frame)
+
+        previous = None
+        with contextlib.suppress(ValueError):  # not in the main thread: leave handlers alone
+            previous = signal.signal(signal.SIGINT, on_sigint)
         t0 = time.perf_counter()
         try:
             sol = self.opti.solve()
             debug = sol
-            opti_sol = sol
         except KeyboardInterrupt:
-            interrupted = True
+            interrupted.append(True)
             debug = self.opti.debug
-            opti_sol = None
         except RuntimeError:
             debug = self.opti.debug
-            opti_sol = None
+        finally:
+            if previous is not None:
+                signal.signal(signal.SIGINT, previous)
         wall = time.perf_counter() - t0
         stats = {}
         with contextlib.suppress(Exception):
@@ -322,8 +332,12 @@ class Problem:
             history["iter"] = list(range(len(history["objective"])))
         status = "Interrupted_By_User" if interrupted else stats.get("return_status", "unknown")
         success = bool(stats.get("success", False)) and not interrupted
+        n_iter = int(stats.get("iter_count", 0))
+        if not (0 <= n_iter <= int(ipopt["max_iter"])):
+            # IPOPT aborted (interrupt, exception): its counter is not set; use what was logged
+            n_iter = max(len(history["objective"]) - 1, 0)
         solution = Solution._from_debug(self, debug, status=status, success=success,
-                                        iterations=int(stats.get("iter_count", 0)), wall_time_s=wall,
+                                        iterations=n_iter, wall_time_s=wall,
                                         stats=stats, history=history)
         if raise_on_failure and not success:
             raise SolveError(f"{self.name}: IPOPT ended with {status}\n" + solution.violation_report(), solution)
