@@ -1,0 +1,18 @@
+"""Rotor and propeller aerodynamics: blade geometry, BEMT as a residual in the
+inflow angle (Ning 2014), analysis mode with a bracketed solve, and the
+Adkins-Liebeck minimum-induced-loss design, all written once in CasADi."""
+from .geometry import RotorGeometry, station_layout, read_geometry_csv, write_geometry_csv
+from .sections import AnalyticSection, section, available_sections
+from .bemt import (
+    bemt_function, station_physics, phi_momentum_guess, bemt_unknowns, add_bemt_nodes,
+    azimuth_angles, INPUT_NAMES, NLP_OUTPUTS, FULL_OUTPUTS, PHI_MIN_RAD, PHI_MAX_RAD,
+)
+from .analysis import analyze, sweep_J, solve_phi, RotorResult, analysis_function, operating_inputs
+
+__all__ = [
+    "RotorGeometry", "station_layout", "read_geometry_csv", "write_geometry_csv",
+    "AnalyticSection", "section", "available_sections",
+    "bemt_function", "station_physics", "phi_momentum_guess", "bemt_unknowns", "add_bemt_nodes",
+    "azimuth_angles", "INPUT_NAMES", "NLP_OUTPUTS", "FULL_OUTPUTS", "PHI_MIN_RAD", "PHI_MAX_RAD",
+    "analyze", "sweep_J", "solve_phi", "RotorResult", "analysis_function", "operating_inputs",
+]
