@@ -1,0 +1,118 @@
+"""Mission time history and figure after a solve: ``mission.csv``, ``mission.png``,
+``mission_segments.csv``.
+
+Used as ``problem.add_report(mission.report)``; ``mdo run`` then calls it with the
+solution and the run folder.  Columns are SI except angles (degrees, ``*_deg``);
+the vehicle supplies what it has (CL, thrust, rotor speed, shaft and battery
+power, state of charge ...): every 1 x K output of its node evaluation is written.
+"""
+from __future__ import annotations
+
+import csv
+from pathlib import Path
+
+import casadi as ca
+import numpy as np
+
+from ..core.units import FT, KWH, MINUTE, MPH
+
+__all__ = ["write_mission_report", "mission_table"]
+
+_FIRST = ["time_s", "altitude_m", "speed_mps", "flight_path_angle_rad", "body_angle_rad", "CL", "thrust_N",
+          "rotor_speed_rpm", "shaft_power_W", "battery_power_W", "state_of_charge"]
+
+
+def mission_table(mission, solution) -> tuple[list[str], np.ndarray, list[str]]:
+    """(column names, K x C values, segment name per row) at ``solution``."""
+    rows = mission.report_rows()
+    order = [k for k in _FIRST if k in rows] + [k for k in rows if k not in _FIRST]
+    stacked = ca.vertcat(*[ca.MX(rows[k][0]) if isinstance(rows[k][0], ca.DM) else rows[k][0] for k in order])
+    vals = np.asarray(solution.value(stacked), dtype=float).reshape(len(order), mission.K)
+    names = []
+    for i, k in enumerate(order):
+        if rows[k][1] == "rad":
+            vals[i] = np.degrees(vals[i])
+            names.append(k[:-4] + "_deg" if k.endswith("_rad") else k + "_deg")
+        else:
+            names.append(k)
+    return names, vals.T, list(mission.segment_of_node)
+
+
+def write_mission_report(mission, solution, out_dir):
+    """Write mission.csv, mission_segments.csv and mission.png; returns the csv path."""
+    out = Path(out_dir)
+    out.mkdir(parents=True, exist_ok=True)
+    names, vals, seg = mission_table(mission, solution)
+    node = [lab.rsplit(" ", 1)[-1] for lab in mission.labels]
+    path = out / "mission.csv"
+    with open(path, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["segment", "node"] + names)
+        for k in range(mission.K):
+            w.writerow([seg[k], node[k]] + [f"{v:.10g}" for v in vals[k]])
+    # per-segment summary
+    e_seg = np.atleast_1d(np.asarray(solution.value(mission.segment_energy_J), float)).ravel()
+    t = vals[:, names.index("time_s")]
+    with open(out / "mission_segments.csv", "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["segment", "kind", "nodes", "start_s", "duration_s", "altitude_start_m", "altitude_end_m",
+                    "speed_start_mps", "speed_end_mps", "energy_kWh"])
+        for i, g in enumerate(mission._segs):
+            a, b = g.node0, g.node0 + g.n - 1
+            w.writerow([g.segment.name, g.segment.kind, g.n, f"{t[a]:.6g}", f"{t[b] - t[a]:.6g}",
+                        f"{g.kin.altitude_m[0]:.6g}", f"{g.kin.altitude_m[-1]:.6g}", f"{g.kin.speed_mps[0]:.6g}",
+                        f"{g.kin.speed_mps[-1]:.6g}", f"{e_seg[i] / KWH:.8g}"])
+    _plot(mission, names, vals, out / "mission.png", solution)
+    return path
+
+
+def _plot(mission, names, vals, path, solution):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    col = {n: vals[:, i] for i, n in enumerate(names)}
+    t = col["time_s"] / MINUTE
+    fig, ax = plt.subplots(2, 2, figsize=(12, 7.5), sharex=True)
+    segs = mission._segs
+
+    def by_segment(a, y, **kw):
+        for i, g in enumerate(segs):
+            sl = slice(g.node0, g.node0 + g.n)
+            a.plot(t[sl], y[sl], ".-", color=f"C{i % 10}", ms=3, lw=1.2, **kw)
+
+    by_segment(ax[0, 0], col["altitude_m"] / FT)
+    ax[0, 0].set_ylabel("altitude (ft)")
+    by_segment(ax[0, 1], col["speed_mps"] / MPH)
+    ax[0, 1].set_ylabel("airspeed (mph)")
+    if "battery_power_W" in col:
+        by_segment(ax[1, 0], col["battery_power_W"] / 1e3)
+        if "shaft_power_W" in col:
+            ax[1, 0].plot(t, col["shaft_power_W"] / 1e3, "k:", lw=0.8, label="shaft")
+            ax[1, 0].plot([], [], "C0.-", label="battery")
+            ax[1, 0].legend(loc="best", fontsize=8)
+    ax[1, 0].set_ylabel("power (kW)")
+    if "state_of_charge" in col:
+        by_segment(ax[1, 1], col["state_of_charge"])
+        ax[1, 1].set_ylabel("state of charge (-)")
+    else:
+        e_name = next((n for n in names if "energy" in n), None)
+        if e_name is not None:
+            by_segment(ax[1, 1], col[e_name] / KWH)
+            ax[1, 1].set_ylabel(f"{e_name} (kWh)")
+    for a in ax.ravel():
+        for g in segs[1:]:
+            a.axvline(t[g.node0], color="0.8", lw=0.6, zorder=0)
+        a.grid(alpha=0.3)
+    for a in ax[1]:
+        a.set_xlabel("time (min)")
+    top = ax[0, 0].get_ylim()[1]
+    for i, g in enumerate(segs):
+        ax[0, 0].text(t[g.node0], top, " " + g.segment.name, rotation=90, va="top", ha="left", fontsize=7,
+                      color=f"C{i % 10}")
+    energy = float(np.asarray(solution.value(mission.energy_used_J))) / KWH
+    fig.suptitle(f"{mission.name}: {mission.vehicle.name}, battery energy {energy:.3f} kWh, "
+                 f"{t[-1]:.1f} min", fontsize=11)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
