@@ -130,8 +130,10 @@ def station_physics(phi, r, chord, theta, vx, vy, rho, mu, a_sound, blades, r_ti
     w0 = lib.sqrt(vx * vx + vy * vy)
     reynolds = rho * w0 * chord / mu
     mach = w0 / a_sound
-    cl = sec.cl(alpha, reynolds, mach)
-    cd = sec.cd(alpha, reynolds, mach)
+    if hasattr(sec, "coefficients"):   # one evaluation of the shared spline bases
+        cl, cd = sec.coefficients(alpha, reynolds, mach)[:2]
+    else:
+        cl, cd = sec.cl(alpha, reynolds, mach), sec.cd(alpha, reynolds, mach)
     cn = cl * cphi - cd * sphi
     ct = cl * sphi + cd * cphi
     acos = ca.acos if lib is ca else np.arccos
@@ -327,7 +329,10 @@ def bemt_unknowns(n_stations: int, n_azimuth: int = 1, init=None, *, n_nodes: in
     shape = (n_stations * n_azimuth,) if n_nodes is None else (n_stations * n_azimuth, n_nodes)
     if init is None:
         init = 0.3
-    init = np.broadcast_to(np.asarray(init, dtype=float), shape).copy()
+    init = np.asarray(init, dtype=float)
+    if init.ndim == 1 and len(shape) == 2 and init.size == shape[0]:
+        init = init[:, None]            # one column shared by every node
+    init = np.broadcast_to(init, shape).copy()
     return {
         "name": "phi", "shape": shape, "unit": "rad", "lower": PHI_MIN_RAD, "upper": PHI_MAX_RAD,
         "scale": 0.3, "init": np.clip(init, PHI_MIN_RAD, PHI_MAX_RAD),
