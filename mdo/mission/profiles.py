@@ -42,6 +42,13 @@ choice is an option of the builders):
   segment's *mean* rate of climb, which fixes the path angle
   (sin(gamma) = 2 rate / (V0 + Vf)); CT No. 2 (100 -> 100 ft) is a level
   acceleration of the same kind.
+* **TTW DT attitude**: decelerating to 3.4 mph with the wings and rotors at
+  WMA = 25 deg, the rotors must carry the weight at the end, so the thrust line
+  must be near vertical and the body pitches to about 65-70 deg nose-up (the wing
+  gives nothing at hover speed).  Table 5 implies it; the eVTOL mission's
+  default body-angle bounds are therefore (-60, 85) deg instead of the
+  mission's (-45, 60) deg.  A vehicle that wants a sane attitude needs a
+  different WMA schedule (option of the vehicle's problem file).
 * **Pitch-rate segments** (VT, DT) leave the body angle to the optimizer at every
   node, as SUAVE's body-angle unknown does for this segment kind; pass
   ``transition_pitch=(initial, final)`` to prescribe a linear pitch schedule
@@ -208,7 +215,7 @@ def evtol_segments(*, cruise_distance_m: float = 50 * NMI, reserve_cruise_distan
 
 
 def evtol_mission(vehicle, *, nodes: int = DEFAULT_NODES, state_form: str = "differentiation", prefix: str = "",
-                  **options) -> Mission:
+                  body_angle_bounds_rad=(-60 * DEG, 85 * DEG), **options) -> Mission:
     """A :class:`Mission` of ``vehicle`` over the eVTOL profile (options as :func:`evtol_segments`)."""
     return Mission(vehicle, evtol_segments(**options), nodes=nodes, state_form=state_form, prefix=prefix,
-                   name="eVTOL profile (Table 5)")
+                   body_angle_bounds_rad=body_angle_bounds_rad, name="eVTOL profile (Table 5)")

@@ -5,10 +5,13 @@ up, and as the exact oracle of the mission's tests.  Everything is closed form:
 
 Aerodynamics (wing at angle of attack ``alpha_w = theta + i_w [+ WMA] - gamma``)::
 
-    CL_lin = CL0 + CL_alpha alpha_w
-    CL     = CL_lin                                         (CL_max None: linear)
-    CL     = CL_lin / (1 + (CL_lin/CL_max)^8)^(1/8)         (smooth saturation at CL_max;
-                                                             -0.7 % at 0.7 CL_max, 1e-5 below 0.25)
+    CL     = CL0 + CL_alpha alpha_w                          (CL_max None: the exact linear polar)
+    CL_lin = CL0 + CL_alpha sin(2 alpha_w)/2,                (CL_max given: a stall model for
+    CL     = CL_lin / (1 + (CL_lin/CL_max)^8)^(1/8)           tilt-wings; sin(2a)/2 = a within 0.5 %
+                                                             below 5 deg, 2 % at 10 deg, and gives
+                                                             no lift at 90 and 180 deg; the
+                                                             saturation is smooth: -0.7 % at
+                                                             0.7 CL_max, -1e-5 below 0.25 CL_max)
     CD     = CD0 + k CL^2 + CD_90 sin^2(alpha_w)             (k = 1/(pi e AR); CD_90 a flat-plate
                                                              term for a tilted wing, default 0)
     L = q S CL,  D = q S CD,  q = rho V^2 / 2
@@ -25,7 +28,11 @@ Glauert inflow (``disk_area_m2`` given; v_i a per-node unknown)::
 ``P_ideal = T V_a`` (a propeller of fixed propulsive efficiency, which cannot hover).
 Then ``P_shaft = P_ideal / eta_p`` (eta_p: propulsive efficiency, or figure of
 merit with a disk area) and ``P_battery = P_shaft / eta_chain + P_aux`` (eta_chain:
-motor x ESC x battery).  The collocated state is the energy drawn from the battery,
+motor x ESC x battery).  Where ``min_thrust_N < 0`` allows a braking (windmilling)
+thrust, the ideal power turns negative; the shaft then receives
+``eta_p |P_ideal|`` and the battery ``regeneration_efficiency eta_chain`` of that
+(0 by default: the motor freewheels).  The switch is a softplus of width
+``w_P = 1e-3 m g (1 m/s)`` (error <= w_P ln 2 at zero power, none elsewhere).  The collocated state is the energy drawn from the battery,
 ``dE/dt = P_battery``; with ``battery_capacity_J`` the state of charge is
 ``1 - E / capacity``.
 
@@ -42,6 +49,7 @@ import numpy as np
 
 from ..core.atmosphere import density
 from ..core.errors import InputError, check_positive, check_range
+from ..core.smooth import softplus
 from .base import G0, NodeEvaluation, Output, ResidualGroup, State, Unknown
 
 __all__ = ["PolarVehicle"]
@@ -57,8 +65,7 @@ class PolarVehicle:
         ``oswald_efficiency`` (k = 1/(pi e AR))
     CL0, CL_alpha_per_rad : linear lift curve (default slope 2 pi AR/(AR + 2),
         Helmbold's low-aspect-ratio approximation)
-    CL_max : smooth saturation of the lift curve (None: linear, the exact
-        fixed polar)
+    CL_max : smooth stall model (None: the exact linear fixed polar)
     wing_incidence_rad, thrust_incidence_rad : wing and thrust line relative to
         the body x axis
     wing_tilts : the wing tilts with the wing-mounted angle (a tilt-wing)
@@ -69,7 +76,10 @@ class PolarVehicle:
     disk_area_m2 : total rotor disk area (enables momentum-theory power and hover)
     auxiliary_power_W : avionics and payload power drawn from the battery
     battery_capacity_J : for the state of charge output
-    max_thrust_N : upper bound of the thrust unknown
+    max_thrust_N, min_thrust_N : bounds of the thrust unknown (``min_thrust_N < 0``
+        allows a braking, windmilling thrust)
+    regeneration_efficiency : fraction of the windmilling shaft power times
+        ``chain_efficiency`` returned to the battery (0: none)
     free_tilt : the thrust-line tilt is a per-node unknown (a tilt-rotor whose
         nacelle angle the mission chooses), bounded by ``tilt_bounds_rad``
     design_wing_area : ``(lower, upper)`` m^2 makes the wing area a design
@@ -86,7 +96,7 @@ class PolarVehicle:
                  propulsive_efficiency: float = 0.8, chain_efficiency: float = 0.9,
                  disk_area_m2: float | None = None, auxiliary_power_W: float = 0.0,
                  battery_capacity_J: float | None = None, max_thrust_N: float | None = None,
-                 free_tilt: bool = False, tilt_bounds_rad=(-10 * math.pi / 180, 100 * math.pi / 180),
+                 min_thrust_N: float = 0.0, regeneration_efficiency: float = 0.0, free_tilt: bool = False, tilt_bounds_rad=(-10 * math.pi / 180, 100 * math.pi / 180),
                  design_wing_area=None):
         self.name = name
         check_positive("mass_kg", mass_kg, "kg")
@@ -116,6 +126,8 @@ class PolarVehicle:
             check_positive("battery_capacity_J", battery_capacity_J, "J")
         if max_thrust_N is not None:
             check_positive("max_thrust_N", max_thrust_N, "N")
+        check_range("min_thrust_N", min_thrust_N, -10 * mass_kg * G0, 0.0, "N")
+        check_range("regeneration_efficiency", regeneration_efficiency, 0.0, 1.0)
         if design_wing_area is not None:
             lo, hi = (float(x) for x in design_wing_area)
             if not 0 < lo <= wing_area_m2 <= hi:
@@ -139,6 +151,9 @@ class PolarVehicle:
         self.aux_W = float(auxiliary_power_W)
         self.capacity_J = None if battery_capacity_J is None else float(battery_capacity_J)
         self.max_thrust_N = None if max_thrust_N is None else float(max_thrust_N)
+        self.min_thrust_N = float(min_thrust_N)
+        self.regen = float(regeneration_efficiency)
+        self.power_width_W = 1e-3 * self.mass_kg * G0 * 1.0
         self.free_tilt = bool(free_tilt)
         self.tilt_bounds_rad = tuple(float(x) for x in tilt_bounds_rad)
         self.design_wing_area = design_wing_area
@@ -163,11 +178,12 @@ class PolarVehicle:
 
     def unknowns(self) -> list:
         W = self.weight_N
-        out = [Unknown("thrust", unit="N", scale=0.25 * W, lower=0.0,
+        out = [Unknown("thrust", unit="N", scale=0.25 * W, lower=self.min_thrust_N,
                        upper=self.max_thrust_N if self.max_thrust_N is not None else np.inf,
                        description="total thrust along the thrust line")]
         if self.disk_area_m2 is not None:
-            out.append(Unknown("induced_velocity", unit="m/s", scale=self._v_hover(1.225), lower=0.0,
+            out.append(Unknown("induced_velocity", unit="m/s", scale=self._v_hover(1.225),
+                               lower=0.0 if self.min_thrust_N >= 0 else -np.inf,
                                description="momentum-theory induced velocity at the disk (Glauert)"))
         if self.free_tilt:
             lo, hi = self.tilt_bounds_rad
@@ -191,8 +207,10 @@ class PolarVehicle:
         alpha_w = theta + self.wing_incidence_rad - gamma
         if self.wing_tilts:
             alpha_w = alpha_w + wma
-        CL = self.CL0 + self.CL_alpha * alpha_w
-        if self.CL_max is not None:
+        if self.CL_max is None:
+            CL = self.CL0 + self.CL_alpha * alpha_w
+        else:
+            CL = self.CL0 + self.CL_alpha * 0.5 * lib.sin(2.0 * alpha_w)
             CL = CL / (1.0 + (CL / self.CL_max) ** 8) ** 0.125
         CD = self.CD0 + self.k * CL ** 2 + self.CD90 * lib.sin(alpha_w) ** 2
         q = 0.5 * rho * V ** 2
@@ -222,8 +240,14 @@ class PolarVehicle:
             outputs["induced_velocity_mps"] = Output(vi, "m/s", "momentum-theory induced velocity")
         else:
             P_ideal = T * Va
-        P_shaft = P_ideal / self.eta_p
-        P_batt = P_shaft / self.eta_chain + self.aux_W
+        if self.min_thrust_N < 0:
+            w = self.power_width_W
+            P_shaft = softplus(P_ideal, w) / self.eta_p - self.eta_p * softplus(-P_ideal, w)
+            P_batt = softplus(P_shaft, w) / self.eta_chain - self.regen * self.eta_chain * softplus(-P_shaft, w) \
+                + self.aux_W
+        else:
+            P_shaft = P_ideal / self.eta_p
+            P_batt = P_shaft / self.eta_chain + self.aux_W
         outputs.update({
             "CL": Output(CL, "-", "lift coefficient"),
             "CD": Output(CD, "-", "drag coefficient"),
@@ -247,13 +271,16 @@ class PolarVehicle:
     # ------------------------------------------------------------------ initial guess
     def induced_velocity(self, T, rho, Va, Ve):
         """Glauert inflow (numpy): solve v sqrt((Va + v)^2 + Ve^2) = T/(2 rho A) by Newton."""
-        vh2 = np.maximum(T, 0.0) / (2.0 * rho * self.disk_area_m2)
-        v = np.sqrt(vh2) + np.maximum(-Va, 0.0)
+        vh2 = T / (2.0 * rho * self.disk_area_m2)
+        # start on the branch of the root: hover-like sqrt(|vh2|) plus the descent speed, or T/(2 rho A V)
+        v = np.where(vh2 >= 0, np.sqrt(np.abs(vh2)) + np.maximum(-Va, 0.0),
+                     vh2 / np.maximum(np.hypot(Va, Ve), 1.0))
         for _ in range(60):
             w = np.sqrt((Va + v) ** 2 + Ve ** 2)
             F = v * w - vh2
             dF = w + v * (Va + v) / np.maximum(w, 1e-9)
-            v = np.maximum(v - F / np.maximum(dF, 1e-9), 0.5 * v)
+            step = F / np.where(np.abs(dF) > 1e-9, dF, 1e-9)
+            v = v - np.clip(step, -0.5 * np.abs(v) - 1.0, 0.5 * np.abs(v) + 1.0)
         return v
 
     def initial_guess(self, nodes) -> dict:
@@ -280,11 +307,14 @@ class PolarVehicle:
         base_tilt = wma + self.thrust_incidence_rad
         need_t = m * (G0 * np.sin(gam) + acc)
         need_n = m * (G0 * np.cos(gam) + V * gdot)
-        wing_borne = q * S * self.CL_alpha * 0.2 > W     # 0.2 rad of alpha would carry the weight
+        # wing-borne where the wing at (about) its maximum lift carries most of the normal load
+        cl_cap = min(self.CL_max if self.CL_max is not None else np.inf, 0.3 * self.CL_alpha)
+        wing_borne = q * S * cl_cap > 0.6 * np.abs(need_n)
         # start: level-flight alpha where the wing can carry the weight, vertical thrust line otherwise
         extra = wma if self.wing_tilts else 0.0
-        alpha0 = np.clip((need_n / np.maximum(q * S, 1e-9) - self.CL0) / self.CL_alpha, -0.1, 0.2)
-        theta = np.where(wing_borne, alpha0 + gam - self.wing_incidence_rad - extra, 0.5 * math.pi - base_tilt)
+        alpha0 = np.clip((need_n / np.maximum(q * S, 1e-9) - self.CL0) / self.CL_alpha, -0.1, 0.3)
+        theta_offset = gam - self.wing_incidence_rad - extra            # theta = alpha_w + offset
+        theta = np.where(wing_borne, alpha0 + theta_offset, 0.5 * math.pi - base_tilt)
         theta = np.where(free_theta, np.clip(theta, -0.7, 1.0), fixed_theta)
         tilt = np.zeros(K)
         T = np.maximum(np.hypot(need_t, need_n - 0.0), 0.05 * W) * np.where(wing_borne, 0.2, 1.0)
@@ -310,8 +340,11 @@ class PolarVehicle:
             dXn = np.where(ok, (-r2 * j11 + r1 * j21) / np.where(ok, det, 1.0), 0.0)
             dXn = np.clip(dXn, -0.1, 0.1)
             dTn = np.clip(dTn, -0.5 * W, 0.5 * W)
-            T = np.maximum(T + dTn, 0.0)
-            theta = np.where(second == 0, np.clip(theta + dXn, -0.75, 1.0), theta)
+            T = np.maximum(T + dTn, self.min_thrust_N)
+            # wing-borne nodes stay on the attached-flow branch (alpha_w in [-0.3, 0.45] rad)
+            theta_new = np.where(wing_borne, np.clip(theta + dXn, theta_offset - 0.3, theta_offset + 0.45),
+                                 theta + dXn)
+            theta = np.where(second == 0, np.clip(theta_new, -0.75, 1.2), theta)
             tilt = np.where(second == 1, np.clip(tilt + dXn, *self.tilt_bounds_rad), tilt)
         out = {"body_angle_rad": theta, "thrust": T.reshape(1, -1)}
         eps = theta + base_tilt + tilt - gam
