@@ -1,0 +1,199 @@
+"""The blade-passage-averaged (axisymmetric) helical wake: the NLP's wake.
+
+Why it is exact in form
+-----------------------
+Averaging the helical fixed wake (mdo.wake.helical) over the blade azimuth φ0
+averages its vorticity; by the linearity of Biot–Savart the averaged velocity is
+the field of the averaged vorticity, which is axisymmetric about e_a:
+
+* each trailing helix of strength −spin·(Γ_{j−1} − Γ_j) at radius r_j, pitch p = V_w/Ω,
+  becomes a cylindrical sheet from the disk (x = 0) downstream with
+  - azimuthal vorticity B·ΔΓ_j/(2πp) per unit length (its helix winding), and
+  - axial vorticity B·ΔΓ_j/(2π r_j) per unit length of circumference;
+* the bound vortices become a sheet of radial vorticity on the disk.
+
+Meridional vorticity (axial, radial) induces only swirl, azimuthal vorticity only
+axial and radial velocity.  Hence, with ΔΓ_j = Γ_j − Γ_{j−1} the jump of the blade
+circulation at edge j (Γ_{−1} = Γ_N = 0) and x, ρ the axial and radial coordinates of
+a field point:
+
+    swirl (Stokes: circulation = axial-vorticity flux through the circle at x, ρ)
+        u_θ = spin · B/(2πρ) · Σ_j ΔΓ_j H(ρ − r_j) · S(x)
+    axial and radial (superposed semi-infinite vortex cylinders, Branlard & Gaunaa 2015)
+        (u_x, u_ρ) = −B/(2π p) · Σ_j ΔΓ_j · K(x/r_j, ρ/r_j)
+
+with H and S unit steps (rounded by the filament core: H = ½(1 + h/√(h² + δ²)),
+S likewise across the disk) and K = (K_x, K_ρ) the field of the unit semi-infinite
+vortex cylinder, radially smeared by the same core, tabulated once
+(data/cylinder_table_core010.npz from data/generate_cylinder_table.py) and evaluated
+as a cubic tensor B-spline (casadi ``Function.bspline``).  Velocity fields of vortex
+sheets are scale-free, so one 2-D table serves every edge radius, rotor radius,
+advance ratio and loading; the advance ratio enters only through 1/p, the loading
+only linearly through ΔΓ.  Far downstream inside the slipstream this gives
+u_x = BΓΩ/(2πV_w) and u_θ = BΓ/(2πρ): the vortex-theory (Betz/Goldstein) relations.
+
+What the NLP evaluates
+----------------------
+The table depends only on geometry (field points relative to the rotor, R, the
+edges), so for a mission it is evaluated once per design:
+
+    u(points) = C1 · (Γ / p) + C2 · Γ         (3M × N matrices, per rotor)
+
+and at every node only the two matrix–vector products remain (:func:`influence`).
+The semi-infinite wake stands for the paper's "few rotations"; at the GA-2P cruise
+(J = 1, five rotations ≈ 11 R) the truncated end changes the velocity at the wing by
+well under 1 % (bench).  Smoothness: the table is C² (cubic), even in ρ (mirrored
+data), its arguments are clamped smoothly to its range (tanh), and the axis is
+regularized (ρ → √(ρ² + (10⁻³R)²)), so the field is C² in the rotor position and
+radius, the points and the operating point.
+"""
+from __future__ import annotations
+
+import functools
+import math
+from pathlib import Path
+
+import casadi as ca
+import numpy as np
+
+from ..core.errors import InputError
+from .frames import rotor_frame
+
+__all__ = ["unit_cylinder", "influence_function", "influence", "mean_wake_velocity",
+           "jump_matrix", "TABLE_CORE_REL"]
+
+_DATA = Path(__file__).with_name("data")
+TABLE_CORE_REL = 0.1
+_AXIS_REG = 1e-3  # ρ regularization / R
+
+
+@functools.lru_cache(maxsize=None)
+def _table(core_rel: float = TABLE_CORE_REL):
+    name = _DATA / f"cylinder_table_core{round(core_rel * 100):03d}.npz"
+    if not name.exists():
+        raise InputError("core_rel", f"no mean-wake table for core {core_rel:g}; available: "
+                         + ", ".join(p.stem for p in _DATA.glob("cylinder_table_core*.npz")))
+    d = np.load(name)
+    tx, ty = d["knots_xi"], d["knots_eta"]
+    cx = np.asarray(d["coef_ux"], float).ravel(order="F")
+    cg = np.asarray(d["coef_g"], float).ravel(order="F")
+    coef = np.stack([cx, cg], axis=0).ravel(order="F")
+    f = ca.Function.bspline("unit_cylinder_bspline", [tx.tolist(), ty.tolist()], coef.tolist(), [3, 3], 2, {})
+    return f, float(d["xi"].max()), float(d["eta"].max()), float(d["core_rel"])
+
+
+@functools.lru_cache(maxsize=None)
+def unit_cylinder(core_rel: float = TABLE_CORE_REL) -> ca.Function:
+    """MX Function ``unit_cylinder(xi, eta) -> (ux, g)``: axial velocity and g = u_ρ/η of a
+    unit semi-infinite vortex cylinder (radius 1, unit azimuthal vorticity per length,
+    from ξ = 0 to +∞), at axial ξ and radius η (in radii), smeared by the core.
+    ξ and η are row vectors (1×n); the table's range (±400, 400 radii) is reached
+    through a smooth tanh clamp."""
+    bs, xmax, emax, _ = _table(core_rel)
+    n = ca.MX.sym("n")  # placeholder for docs; the map is built per call size
+    del n
+    xi = ca.MX.sym("xi")
+    eta = ca.MX.sym("eta")
+    lx, le = 0.95 * xmax, 0.95 * emax
+    out = bs(ca.vertcat(lx * ca.tanh(xi / lx), le * ca.tanh(eta / le)))
+    return ca.Function("unit_cylinder", [xi, eta], [out[0], out[1]], ["xi", "eta"], ["ux", "g"])
+
+
+def jump_matrix(n_stations: int) -> np.ndarray:
+    """(N+1)×N matrix D with ΔΓ = D·Γ: ΔΓ_j = Γ_j − Γ_{j−1}, Γ_{−1} = Γ_N = 0."""
+    d = np.zeros((n_stations + 1, n_stations))
+    for j in range(n_stations + 1):
+        if j < n_stations:
+            d[j, j] += 1.0
+        if j > 0:
+            d[j, j - 1] -= 1.0
+    return d
+
+
+@functools.lru_cache(maxsize=None)
+def influence_function(n_points: int, n_stations: int, blades: int, core_rel: float = TABLE_CORE_REL) -> ca.Function:
+    """Function ``mean_wake_influence(points, center, axis, radius_m, s_edges, spin)
+    -> (C1, C2)``: 3M×N matrices (rows point-major: x, y, z of point 0, then point 1 ...)
+    such that the blade-passage-averaged induced velocity is
+
+        u = C1·(Γ/p) + C2·Γ,   p = V_w/Ω (m/rad),
+
+    for blade circulations Γ (N,) on the elements bounded by ``s_edges`` (N+1, r/R).
+    Depends on geometry only."""
+    m, n, e = n_points, n_stations, n_stations + 1
+    pts = ca.MX.sym("points", 3, m)
+    center = ca.MX.sym("center", 3)
+    axis = ca.MX.sym("axis", 3)
+    radius = ca.MX.sym("radius_m")
+    s_edges = ca.MX.sym("s_edges", e)
+    spin = ca.MX.sym("spin")
+    e_a, _, _ = rotor_frame(axis)
+    d = pts - ca.repmat(center, 1, m)
+    x = ca.mtimes(e_a.T, d)                                   # 1×M
+    rvec = d - ca.mtimes(e_a, x)                              # 3×M
+    eps = _AXIS_REG * radius
+    rho2 = ca.sum1(rvec**2) + eps**2                          # 1×M
+    rho = ca.sqrt(rho2)
+    r_e = radius * s_edges                                    # E×1
+    inv_re = 1.0 / r_e
+    xi = ca.mtimes(inv_re, x)                                 # E×M
+    eta = ca.mtimes(inv_re, rho)                              # E×M
+    cyl = unit_cylinder(core_rel).map(e * m)
+    kx, g = cyl(ca.reshape(xi, 1, e * m), ca.reshape(eta, 1, e * m))
+    kx = ca.reshape(kx, e, m)
+    g = ca.reshape(g, e, m) * ca.repmat(inv_re, 1, m)          # u_ρ vector = g·ρvec/r_e
+    # swirl: H_e(ρ) with the core of edge e, written in ρ² so that it is smooth on the axis
+    dr2 = ca.repmat(rho2, e, 1) - ca.repmat(r_e**2, 1, m)
+    w2 = ca.repmat((2 * core_rel * r_e**2) ** 2, 1, m)
+    h = 0.5 * (1 + dr2 / ca.sqrt(dr2**2 + w2))                 # E×M
+    dx = core_rel * radius
+    s_x = 0.5 * (1 + x / ca.sqrt(x**2 + dx**2))                # 1×M
+    eps_h = core_rel * radius * s_edges[0]
+    swirl_dir = ca.cross(ca.repmat(e_a, 1, m), rvec) / ca.repmat(rho2 - eps**2 + eps_h**2, 3, 1)  # 3×M, |.| ≈ 1/ρ
+    k = blades / (2 * math.pi)
+    # per edge columns, point-major rows: element (3p + c, j)
+    c1_e = -k * (ca.kron(kx.T, ca.DM.ones(3, 1)) * ca.repmat(ca.reshape(ca.repmat(e_a, 1, m), 3 * m, 1), 1, e)
+                 + ca.kron(g.T, ca.DM.ones(3, 1)) * ca.repmat(ca.reshape(rvec, 3 * m, 1), 1, e))
+    c2_e = (spin * k) * ca.kron(h.T * ca.repmat(s_x.T, 1, e), ca.DM.ones(3, 1)) \
+        * ca.repmat(ca.reshape(swirl_dir, 3 * m, 1), 1, e)
+    dmat = ca.DM(jump_matrix(n))
+    c1 = ca.mtimes(c1_e, dmat)
+    c2 = ca.mtimes(c2_e, dmat)
+    return ca.Function("mean_wake_influence", [pts, center, axis, radius, s_edges, spin], [c1, c2],
+                       ["points", "center", "axis", "radius_m", "s_edges", "spin"], ["C1", "C2"])
+
+
+def _col(x):
+    if isinstance(x, (ca.MX, ca.SX, ca.DM)):
+        return ca.reshape(x, x.numel(), 1)
+    return ca.DM(np.asarray(x, dtype=float).reshape(-1, 1))
+
+
+def _pts(points):
+    if isinstance(points, (ca.MX, ca.SX, ca.DM)):
+        return points
+    return ca.DM(np.asarray(points, float).reshape(3, -1))
+
+
+def influence(points, rotor):
+    """(C1, C2) of :func:`influence_function` for a :class:`WakeRotor` at ``points`` (3×M)."""
+    pts = _pts(points)
+    f = influence_function(pts.shape[1], rotor.n_stations, rotor.blades, rotor.core_rel)
+    return f(pts, _col(rotor.center), _col(rotor.axis), rotor.radius_m,
+             ca.DM(np.asarray(rotor.s_edges)), rotor.spin)
+
+
+def mean_wake_velocity(points, rotor, gamma, omega_radps, v_wake_mps):
+    """Blade-passage-averaged induced velocity (3×M, m/s) of ``rotor`` at ``points``.
+
+    Same inputs as :func:`mdo.wake.helical.full_wake_velocity`.  Numbers in → NumPy
+    array out; MX in → MX out.
+    """
+    pts = _pts(points)
+    c1, c2 = influence(pts, rotor)
+    g = _col(gamma)
+    u = ca.mtimes(c1, g * (omega_radps / v_wake_mps)) + ca.mtimes(c2, g)
+    u = ca.reshape(u, 3, pts.shape[1])
+    if isinstance(u, ca.DM):
+        return np.array(u)
+    return u
