@@ -36,7 +36,7 @@ from .bemt import FULL_OUTPUTS, INPUT_NAMES, _elements, _symbols, bemt_function,
 from .geometry import RotorGeometry
 from .sections import section as make_section
 
-__all__ = ["solve_kernel", "point_solver", "solve_phi", "analyze", "RotorResult", "sweep_J",
+__all__ = ["solve_kernel", "point_solver", "solve_phi", "analyze", "analyze_inputs", "RotorResult", "sweep_J",
            "analysis_function", "operating_inputs"]
 
 _EPS_PHI = 1e-6
@@ -341,6 +341,15 @@ def analyze(rotor: RotorGeometry, *, omega_radps, v_axial_mps=0.0, v_inplane_mps
                                   v_inplane_mps=v_inplane_mps, altitude_m=altitude_m,
                                   pitch_rad=pitch_rad, rho_kgpm3=rho_kgpm3, mu_Pas=mu_Pas,
                                   a_mps=a_mps, n_stations=n_stations)
+    out = analyze_inputs(sec, inputs, n_stations, n_azimuth, tip_loss=tip_loss, hub_loss=hub_loss)
+    out.stations = st
+    return out
+
+
+def analyze_inputs(sec, inputs: dict, n_stations: int = 20, n_azimuth: int = 1, *, tip_loss=True,
+                   hub_loss=True) -> RotorResult:
+    """Low-level analysis on raw ``bemt_function`` inputs (no checks): chord and twist
+    given at the BEMT stations; scalars or K-vectors for the operating inputs."""
     sol = solve_phi(sec, inputs, n_stations, n_azimuth, tip_loss=tip_loss, hub_loss=hub_loss)
     vals = evaluate(sec, inputs, sol["phi_rad"], n_stations, n_azimuth, tip_loss=tip_loss,
                     hub_loss=hub_loss)
@@ -349,7 +358,7 @@ def analyze(rotor: RotorGeometry, *, omega_radps, v_axial_mps=0.0, v_inplane_mps
     resid = np.abs(np.asarray(vals["residual"]))
     rmax = np.max(resid, axis=0)
     conv = sol["found"].all(axis=0) & (rmax <= 1e-8)
-    return RotorResult(vals, rmax, conv, inputs=inputs, stations=st)
+    return RotorResult(vals, rmax, conv, inputs=inputs)
 
 
 def sweep_J(rotor: RotorGeometry, J, *, rpm: float, altitude_m: float = 0.0, pitch_rad=None,
