@@ -48,10 +48,11 @@ from .segments import Kinematics, Segment
 __all__ = ["Mission", "DEFAULT_NODES", "STANDARD_PARAMETERS"]
 
 #: CGL nodes per segment unless a segment says otherwise.  Chosen by the
-#: convergence study in results/mission/convergence.md: with 8 nodes the
-#: GA profile's mission energy is within 1e-7 (relative) of the 32-node value
-#: for the polar vehicle, and every segment's own energy within 1e-6.
-DEFAULT_NODES = 8
+#: convergence study (results/mission/convergence.md, tests/bench/mission_convergence.py):
+#: the smallest count for which the GA profile's mission energy is within 1e-7 and
+#: every segment's energy within 1e-5 of the 32-node solution (polar vehicle,
+#: differentiation form: 4.9e-8 and 6.4e-6 at 6 nodes; 5 nodes give 1.4e-6 and 1.6e-4).
+DEFAULT_NODES = 6
 
 #: Segment parameters the mission always knows (Table 5's WMA x beta_c); a vehicle
 #: may declare more in ``vehicle.parameters``.
