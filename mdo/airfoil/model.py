@@ -5,14 +5,18 @@ Given alpha [rad], Re and M (arrays of one common length n, or SX columns):
 
 1. ``r = ln Re`` is smoothly limited to the data's range widened by ``re_margin``
    (softplus corners of width ``re_width``):  ``r_c = r - sp(r - r_hi) + sp(r_lo - r)``.
-   The polars are interpolated at ``r_c`` with the natural-spline weights
-   ``W_j(r_c)``; outside the data ``ln cd`` continues as a power law,
+   The polars are interpolated at ``r_c`` by a natural cubic spline through the
+   Reynolds levels (see :mod:`mdo.airfoil.fit`); outside the data ``ln cd``
+   continues as a power law,
    ``ln cd += n_lo sp(r_lo - r) - n_hi sp(r - r_hi)`` (laminar Blasius exponent 1/2
    below, the local exponent of Schlichting's turbulent skin friction
    ``0.455/(log10 Re)^2.58``, 2.58/ln Re ~ 0.16 at 1e7, above).
-2. The attached-flow fit ``cl_f, ln cd_f, cm_f`` (truncated-power cubic splines in
-   alpha, one column per Re level, see :mod:`mdo.airfoil.fit`), evaluated at alpha
-   smoothly clipped to the knot range so that it stays bounded for any alpha.
+2. The attached-flow fit ``cl_f, ln cd_f, cm_f``: one tensor-product cubic
+   B-spline in (alpha, ln Re) (C2: continuous value, slope and curvature), evaluated
+   at alpha smoothly clipped to the knot range so that it stays bounded for any alpha.
+   In CasADi it is ``casadi.Function.bspline`` behind a never-inlined wrapper, i.e.
+   one call node in an SX graph with exact first and second derivatives; in NumPy
+   SciPy's ``NdBSpline`` on the same knots and coefficients.
 3. Compressibility of the attached part: Prandtl-Glauert ``cl/beta`` and ``cm/beta``
    with ``beta = sqrt(1 - M_e^2)`` and ``M_e = M - sp(M - mach_cap)`` (smooth cap,
    so a rotor tip at M 0.8 gives a finite factor <= 1/sqrt(1 - mach_cap^2));
@@ -46,7 +50,7 @@ import numpy as np
 from ..core.smooth import sigmoid, softplus
 from .fit import SurrogateTables
 
-__all__ = ["ModelSettings", "evaluate", "post_stall_maxima"]
+__all__ = ["ModelSettings", "SplineSet", "evaluate", "post_stall_maxima"]
 
 
 @dataclass(frozen=True)
@@ -86,45 +90,92 @@ def _rowsum(lib, a):
     return ca.sum2(a) if lib is ca else a.sum(axis=-1)
 
 
-def _row(lib, v, n):
-    """A constant row vector repeated over n stations."""
-    return ca.repmat(ca.DM(v).T, n, 1) if lib is ca else np.broadcast_to(v, (n, len(v)))
+class SplineSet:
+    """The fitted surfaces of one airfoil as cubic B-splines, for both back ends.
+
+    * ``surface``: (alpha, ln Re) -> (cl, ln cd, cm), tensor product;
+    * ``edges``: ln Re -> (alpha_hi, alpha_lo, cl/ln cd/cm at alpha_hi, at alpha_lo).
+
+    CasADi: ``casadi.Function.bspline`` objects (C2 piecewise cubics evaluated by
+    de Boor's algorithm in C++; inside an SX graph each call is one call node with
+    exact first and second derivatives).  NumPy: SciPy's ``NdBSpline``/``BSpline``
+    on the same knots and coefficients (equal to rounding; tested).
+    Arguments must lie inside the knot ranges (the model clips them smoothly first).
+    """
+
+    def __init__(self, tab: SurrogateTables):
+        from scipy.interpolate import BSpline, NdBSpline
+
+        self.tab = tab
+        self._np_surface = NdBSpline((tab.knots, tab.knots_re), tab.coef_2d, 3)
+        self._np_edges = BSpline(tab.knots_re, tab.coef_edges, 3)
+        surface = ca.Function.bspline(
+            f"polar_{tab.name}_bspline", [tab.knots.tolist(), tab.knots_re.tolist()],
+            np.transpose(tab.coef_2d, (2, 0, 1)).ravel(order="F").tolist(), [3, 3], 3)
+        edges = ca.Function.bspline(
+            f"polar_edges_{tab.name}_bspline", [tab.knots_re.tolist()],
+            tab.coef_edges.T.ravel(order="F").tolist(), [3], 8)
+        # ``Function.bspline`` is an MX node; wrapped in a never-inlined Function it
+        # becomes a single call node inside SX graphs (with exact derivatives).
+        x2, x1 = ca.MX.sym("alpha_lnre", 2), ca.MX.sym("lnre")
+        self.ca_surface = ca.Function(f"polar_{tab.name}", [x2], [surface(x2)],
+                                      ["alpha_lnre"], ["cl_lncd_cm"], {"never_inline": True})
+        self.ca_edges = ca.Function(f"polar_edges_{tab.name}", [x1], [edges(x1)],
+                                    ["lnre"], ["edges"], {"never_inline": True})
+        self._maps = {}
+
+    def _mapped(self, f, n):
+        if n == 1:
+            return f
+        key = (f.name(), n)
+        if key not in self._maps:
+            self._maps[key] = f.map(n)
+        return self._maps[key]
+
+    def surface(self, lib, a, r, n):
+        if lib is ca:
+            out = self._mapped(self.ca_surface, n)(ca.horzcat(a, r).T).T  # n x 3
+            return out[:, 0], out[:, 1], out[:, 2]
+        out = self._np_surface(np.stack([a, r], axis=-1))
+        return out[:, 0], out[:, 1], out[:, 2]
+
+    def edges(self, lib, r, n):
+        if lib is ca:
+            out = self._mapped(self.ca_edges, n)(r.T).T  # n x 8
+            return [out[:, k] for k in range(8)]
+        out = self._np_edges(r)
+        return [out[:, k] for k in range(8)]
+
+
+def splines_of(tab: SurrogateTables) -> SplineSet:
+    if getattr(tab, "_splines", None) is None:
+        tab._splines = SplineSet(tab)
+    return tab._splines
 
 
 def evaluate(tab: SurrogateTables, thickness_to_chord: float, alpha, reynolds, mach,
              lib, n: int, settings: ModelSettings = ModelSettings()):
     """cl, cd, cm at n stations; ``alpha``, ``reynolds``, ``mach`` are length-n
-    NumPy vectors (``lib`` = numpy) or n x 1 SX columns (``lib`` = casadi)."""
+    NumPy vectors (``lib`` = numpy) or n x 1 SX/MX columns (``lib`` = casadi)."""
     s = settings
     deg = np.pi / 180.0
-    # --- 1. Reynolds number: limited ln Re and the spline weights over the levels
+    spl = splines_of(tab)
+    # --- 1. Reynolds number: ln Re limited to the data range +- re_margin
     r = lib.log(reynolds)
     r_lo = tab.log_re[0] - s.re_margin
     r_hi = tab.log_re[-1] + s.re_margin
     sp_hi = softplus(r - r_hi, s.re_width)
     sp_lo = softplus(r_lo - r, s.re_width)
     r_c = r - sp_hi + sp_lo
-    tr = [lib.fmax(r_c - ri, 0.0) ** 3 for ri in tab.log_re]
-    W = _mm(lib, _cols(lib, tr), tab.w_e) + _row(lib, tab.w_a, n) + _cols(lib, [r_c] * len(tab.w_b)) * _row(lib, tab.w_b, n)
-
-    def over_re(values):  # per-level values -> value at r_c
-        return _rowsum(lib, W * _row(lib, values, n))
 
     # --- 2. attached-flow fit at the smoothly clipped alpha
     wa = s.alpha_clip_width_deg * deg
     a_lo_c, a_hi_c = tab.alpha_clip
     a_c = alpha - softplus(alpha - (a_hi_c - 4 * wa), wa) + softplus((a_lo_c + 4 * wa) - alpha, wa)
-    ta = _cols(lib, [lib.fmax(a_c - ti, 0.0) ** 3 for ti in tab.knots])
-    cl_f = _rowsum(lib, _mm(lib, ta, tab.d_cl) * W)
-    lncd_f = _rowsum(lib, _mm(lib, ta, tab.d_logcd) * W)
-    cm_f = _rowsum(lib, _mm(lib, ta, tab.d_cm) * W)
-    lncd_f = lncd_f + s.n_laminar * sp_lo - s.n_turbulent * sp_hi
-    a_hi = over_re(tab.alpha_hi)
-    a_lo = over_re(tab.alpha_lo)
-    cl_hi, lncd_hi, cm_hi = (over_re(tab.edge_hi[k]) for k in range(3))
-    cl_lo, lncd_lo, cm_lo = (over_re(tab.edge_lo[k]) for k in range(3))
-    lncd_hi = lncd_hi + s.n_laminar * sp_lo - s.n_turbulent * sp_hi
-    lncd_lo = lncd_lo + s.n_laminar * sp_lo - s.n_turbulent * sp_hi
+    cl_f, lncd_f, cm_f = spl.surface(lib, a_c, r_c, n)
+    a_hi, a_lo, cl_hi, lncd_hi, cm_hi, cl_lo, lncd_lo, cm_lo = spl.edges(lib, r_c, n)
+    cd_re = s.n_laminar * sp_lo - s.n_turbulent * sp_hi   # power law beyond the data
+    lncd_f, lncd_hi, lncd_lo = lncd_f + cd_re, lncd_hi + cd_re, lncd_lo + cd_re
 
     # --- 3. compressibility of the attached part
     m_e = mach - softplus(mach - s.mach_cap, s.mach_cap_width)
