@@ -70,6 +70,7 @@ import casadi as ca
 import numpy as np
 
 from .geometry import station_layout
+from .sections import section_coefficients
 
 __all__ = [
     "station_physics",
@@ -130,10 +131,7 @@ def station_physics(phi, r, chord, theta, vx, vy, rho, mu, a_sound, blades, r_ti
     w0 = lib.sqrt(vx * vx + vy * vy)
     reynolds = rho * w0 * chord / mu
     mach = w0 / a_sound
-    if hasattr(sec, "coefficients"):   # one evaluation of the shared spline bases
-        cl, cd = sec.coefficients(alpha, reynolds, mach)[:2]
-    else:
-        cl, cd = sec.cl(alpha, reynolds, mach), sec.cd(alpha, reynolds, mach)
+    cl, cd = section_coefficients(sec, alpha, reynolds, mach, r / r_tip)
     cn = cl * cphi - cd * sphi
     ct = cl * sphi + cd * cphi
     acos = ca.acos if lib is ca else np.arccos

@@ -54,7 +54,7 @@ import numpy as np
 from ..core.atmosphere import check_altitude, density, dynamic_viscosity, speed_of_sound
 from ..core.errors import InputError
 from .geometry import RotorGeometry, station_layout
-from .sections import section as make_section
+from .sections import section as make_section, section_coefficients
 
 __all__ = ["adkins_liebeck_function", "adkins_liebeck", "adkins_liebeck_unrolled",
            "add_adkins_liebeck", "DESIGN_INPUTS", "design_guess"]
@@ -86,10 +86,7 @@ def _design_state(sec, n, w, alpha, p, tip_loss=True, hub_loss=True):
     u0 = 0.5 * w * cphi * cphi
     c0 = circ / cl_d / ((V + u0) / sphi)
     reynolds = rho * w0 * c0 / mu
-    if hasattr(sec, "coefficients"):
-        cl, cd = sec.coefficients(alpha, reynolds, mach)[:2]
-    else:
-        cl, cd = sec.cl(alpha, reynolds, mach), sec.cd(alpha, reynolds, mach)
+    cl, cd = section_coefficients(sec, alpha, reynolds, mach, xi)
     eps = cd / cl
     u = 0.5 * w * cphi * cphi * (1.0 - eps * sphi / cphi)   # A-L Eq. 17 (a V)
     W = (V + u) / sphi

@@ -16,7 +16,7 @@ import numpy as np
 from ..core.errors import InputError
 from ..core.smooth import sigmoid, smooth_abs, smooth_max, xp
 
-__all__ = ["AnalyticSection", "section", "available_sections"]
+__all__ = ["AnalyticSection", "SpanwiseBlend", "section", "available_sections"]
 
 
 class AnalyticSection:
@@ -78,6 +78,59 @@ class AnalyticSection:
                 f"cd0={self.cd0:g}, k={self.k_drag:g}, stall={math.degrees(self.alpha_stall_rad):.3g} deg)")
 
 
+class SpanwiseBlend:
+    """Two sections blended along the blade: ``inner`` inboard, ``outer`` outboard.
+
+    ``c = (1 - w) c_inner + w c_outer`` with ``w = sigmoid((x - x_mid)/width)``,
+    ``x = r/R`` (C-infinity; w = 0.018 / 0.982 at x_mid -+ 4 width).  The BEMT
+    passes ``x`` through ``coefficients(alpha, Re, M, x)`` (``spanwise = True``).
+    APC's thin-electric propellers, for instance, blend the low-Reynolds E63
+    inboard into a Clark-Y-like section outboard (apcprop.com, "Engineering").
+    """
+
+    spanwise = True
+
+    def __init__(self, inner, outer, x_mid: float = 0.5, width: float = 0.05):
+        if not (0.0 < x_mid < 1.0) or not (width > 0):
+            raise InputError("airfoil", f"blend position must lie in (0, 1) and width > 0, got {x_mid}, {width}")
+        self.inner, self.outer = inner, outer
+        self.x_mid, self.width = float(x_mid), float(width)
+        self.name = f"{getattr(inner, 'name', inner)}:{x_mid:g}:{getattr(outer, 'name', outer)}"
+        self.alpha0_rad = 0.5 * (float(getattr(inner, "alpha0_rad", 0.0)) + float(getattr(outer, "alpha0_rad", 0.0)))
+
+    def weight(self, x):
+        return sigmoid(x - self.x_mid, self.width)
+
+    def coefficients(self, alpha, reynolds, mach=0.0, x=0.5):
+        w = self.weight(x)
+        a = _coefficients(self.inner, alpha, reynolds, mach)
+        b = _coefficients(self.outer, alpha, reynolds, mach)
+        return tuple((1.0 - w) * ai + w * bi for ai, bi in zip(a, b))
+
+    def cl(self, alpha, reynolds, mach=0.0, x=0.5):
+        return self.coefficients(alpha, reynolds, mach, x)[0]
+
+    def cd(self, alpha, reynolds, mach=0.0, x=0.5):
+        return self.coefficients(alpha, reynolds, mach, x)[1]
+
+    def __repr__(self):
+        return f"SpanwiseBlend({self.inner!r} -> {self.outer!r} at r/R = {self.x_mid:g})"
+
+
+def _coefficients(sec, alpha, reynolds, mach):
+    if hasattr(sec, "coefficients"):
+        out = sec.coefficients(alpha, reynolds, mach)
+        return out[0], out[1]
+    return sec.cl(alpha, reynolds, mach), sec.cd(alpha, reynolds, mach)
+
+
+def section_coefficients(sec, alpha, reynolds, mach, x=None):
+    """``(cl, cd)`` of any section object; ``x = r/R`` for spanwise blends."""
+    if getattr(sec, "spanwise", False):
+        return sec.coefficients(alpha, reynolds, mach, x)[:2]
+    return _coefficients(sec, alpha, reynolds, mach)
+
+
 _NAMED: dict = {}  # one object per name, so that built CasADi Functions can be cached by section
 
 
@@ -102,6 +155,16 @@ def section(spec):
             raise InputError("airfoil", f"a section needs cl() and cd() methods, got {spec!r}")
         return spec
     name = spec.strip()
+    if name.count(":") == 2:   # INNER:X:OUTER, a spanwise blend
+        inner, x, outer = name.split(":")
+        try:
+            xv = float(x)
+        except ValueError as exc:
+            raise InputError("airfoil", f"blend spec is INNER:R_OVER_R:OUTER, got {name!r}") from exc
+        key = f"{inner.strip()}:{xv:g}:{outer.strip()}"
+        if key not in _NAMED:
+            _NAMED[key] = SpanwiseBlend(section(inner), section(outer), xv)
+        return _NAMED[key]
     if name in _NAMED:
         return _NAMED[name]
     if name.lower() == "analytic":
