@@ -89,7 +89,7 @@ def test_joins_are_continuous_and_states_integrate(tmp_path):
     from mdo.mission.profiles import ga_mission
     veh = PolarVehicle(**GA, battery_capacity_J=120 * KWH)
     p = Problem("ga")
-    m = ga_mission(veh).build(p)
+    m = ga_mission(veh, nodes=10).build(p)
     p.add_report(m.report)
     sol = p.solve(verbose=False)
     assert sol.success
@@ -117,7 +117,7 @@ def test_joins_are_continuous_and_states_integrate(tmp_path):
     for g in m._segs:
         sl = slice(g.node0, g.node0 + g.n)
         cc = g.kin.duration_s * Collocation(g.n).weights @ P[sl]
-        assert E[sl][-1] - E[sl][0] == pytest.approx(cc, rel=1e-6)
+        assert E[sl][-1] - E[sl][0] == pytest.approx(cc, rel=1e-7)
     assert (tmp_path / "mission.png").stat().st_size > 10000
     assert sol["battery_energy_kWh"] == pytest.approx(E[-1] / KWH, rel=1e-9)
 

@@ -61,7 +61,7 @@ def write_mission_report(mission, solution, out_dir):
             a, b = g.node0, g.node0 + g.n - 1
             w.writerow([g.segment.name, g.segment.kind, g.n, f"{t[a]:.6g}", f"{t[b] - t[a]:.6g}",
                         f"{g.kin.altitude_m[0]:.6g}", f"{g.kin.altitude_m[-1]:.6g}", f"{g.kin.speed_mps[0]:.6g}",
-                        f"{g.kin.speed_mps[-1]:.6g}", f"{e_seg[i] / KWH:.8g}"])
+                        f"{g.kin.speed_mps[-1]:.6g}", f"{e_seg[i] / KWH:.12g}"])
     _plot(mission, names, vals, out / "mission.png", solution)
     return path
 
