@@ -22,3 +22,6 @@ __all__ = [
     "full_wake_function", "full_wake_velocity", "wake_segments_function",
     "influence", "influence_function", "jump_matrix", "mean_wake_velocity", "unit_cylinder",
 ]
+from .coupling import apply_influences, external_velocity, wake_convection_speed, wake_influences
+
+__all__ += ["apply_influences", "external_velocity", "wake_convection_speed", "wake_influences"]

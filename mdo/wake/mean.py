@@ -25,7 +25,8 @@ a field point:
 with H and S unit steps (rounded by the filament core: H = ½(1 + h/√(h² + δ²)),
 S likewise across the disk) and K = (K_x, K_ρ) the field of the unit semi-infinite
 vortex cylinder, radially smeared by the same core, tabulated once
-(data/cylinder_table_core010.npz from data/generate_cylinder_table.py) and evaluated
+(data/cylinder_table_core005.npz and ..._core010.npz, one per core size, from
+data/generate_cylinder_table.py) and evaluated
 as a cubic tensor B-spline (casadi ``Function.bspline``).  Velocity fields of vortex
 sheets are scale-free, so one 2-D table serves every edge radius, rotor radius,
 advance ratio and loading; the advance ratio enters only through 1/p, the loading
@@ -63,7 +64,7 @@ __all__ = ["unit_cylinder", "influence_function", "influence", "mean_wake_veloci
            "jump_matrix", "TABLE_CORE_REL"]
 
 _DATA = Path(__file__).with_name("data")
-TABLE_CORE_REL = 0.1
+TABLE_CORE_REL = 0.05
 _AXIS_REG = 1e-3  # ρ regularization / R
 
 

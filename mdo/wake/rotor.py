@@ -9,7 +9,7 @@ from ..core.errors import InputError
 
 __all__ = ["WakeRotor", "element_edges", "DEFAULT_CORE_REL"]
 
-DEFAULT_CORE_REL = 0.1  # filament core / radius; the shipped mean-wake table is built for it
+DEFAULT_CORE_REL = 0.05  # filament core / radius of its helix; mean-wake tables ship for 0.05 and 0.1
 
 
 @dataclass(frozen=True)
@@ -53,6 +53,28 @@ class WakeRotor:
     @property
     def n_stations(self) -> int:
         return len(self.s_edges) - 1
+
+    @classmethod
+    def from_geometry(cls, geometry, center, *, n_stations: int = 20, axis=None, radius_m=None,
+                      core_rel: float = DEFAULT_CORE_REL, name: str | None = None) -> "WakeRotor":
+        """Adapter from an ``mdo.rotor.RotorGeometry``.
+
+        The BEMT (mdo.rotor) evaluates Γ at the midpoints of cosine-spaced panels
+        whose edges are r/R = h + (1 − h)(1 − cos(πk/n))/2, k = 0..n
+        (``mdo.rotor.geometry`` docstring); those edges are the ring edges here.
+        ``geometry.rotation`` is the sense about the thrust direction, the wake axis is
+        opposite to it, so spin = −rotation.  ``axis`` is the wake axis in the wing's
+        frame (default +x: a tractor rotor in cruise; the geometry's own ``axis`` is in
+        its owner's frame and is not used); ``radius_m`` (e.g. a design variable)
+        defaults to the geometry's radius.
+        """
+        h = float(geometry.hub_fraction)
+        k = np.arange(n_stations + 1)
+        edges = h + (1.0 - h) * 0.5 * (1.0 - np.cos(np.pi * k / n_stations))
+        ax = axis if axis is not None else (1.0, 0.0, 0.0)
+        return cls(center=center, axis=ax, radius_m=geometry.radius_m if radius_m is None else radius_m,
+                   s_edges=edges, blades=int(geometry.blades), spin=-int(geometry.rotation),
+                   core_rel=core_rel, name=name if name is not None else getattr(geometry, "name", ""))
 
 
 def element_edges(r_over_R, hub_fraction: float, tip: float = 1.0) -> np.ndarray:

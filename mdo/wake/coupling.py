@@ -1,0 +1,133 @@
+"""Coupling of the propeller wakes into the wing (paper Eqs. 5–6).
+
+The wake's induced velocity at the wing's control points is added to the onset
+flow in the VLM's flow-tangency condition (Eq. 5: v_tot = v_wing + v_wake, with
+v_wake = Σ C_{r,t} Γ_r, Eq. 6b); mdo.wing.VLM takes it as ``v_ext``.  With
+``lift_velocity='local'`` the VLM also uses it in Kutta–Joukowski, so a blown strip
+feels the slipstream's dynamic pressure (the paper's code used the freestream one;
+see README for the choice).
+
+One function serves analysis and the mission NLP:
+
+    vx, vy, vz = external_velocity(points, rotors, gamma, omega_radps, v_wake_mps)
+
+``points`` 3×M (numbers or MX, e.g. the VLM's symbolic control points), ``rotors`` a
+list of :class:`WakeRotor` (placement, axis, sense, radius; may hold MX), and per
+rotor its blade circulation ``gamma`` (N×K, one column per operating point), rotor
+speed and wake convection speed (K,).  Returns three M×K matrices.
+
+With ``model="mean"`` (default) the blade-passage-averaged wake is evaluated as
+``C1(geometry)·(Γ Ω/V_w) + C2(geometry)·Γ``: the B-spline table is evaluated once
+per design (M·(N+1) look-ups per rotor), and each operating point costs two
+matrix products — the form for the mission NLP.  ``model="full"`` evaluates the
+helical fixed wake (Biot–Savart over every filament) at every operating point:
+the paper's model, for analysis and checks.
+"""
+from __future__ import annotations
+
+import casadi as ca
+import numpy as np
+
+from ..core.errors import InputError
+from .helical import DEFAULT_ROTATIONS, DEFAULT_STEPS_PER_ROTATION, full_wake_velocity
+from .mean import influence
+
+__all__ = ["wake_influences", "external_velocity", "apply_influences", "wake_convection_speed"]
+
+
+def wake_convection_speed(v_axial_mps, va_mean_mps):
+    """Convection speed of the fixed wake along its axis: the freestream component
+    along the axis plus the BEMT's disk-averaged induced axial velocity (paper §III.B)."""
+    return v_axial_mps + va_mean_mps
+
+
+def wake_influences(points, rotors):
+    """Per rotor, the averaged wake's (C1, C2) at ``points`` (3×M): see mean.influence."""
+    return [influence(points, r) for r in rotors]
+
+
+def _is_sym(*xs):
+    return any(isinstance(x, (ca.MX, ca.SX)) for x in xs)
+
+
+def _as_nk(g, n, name):
+    if isinstance(g, (ca.MX, ca.SX, ca.DM)):
+        if g.shape[0] != n:
+            if g.shape[1] == n:
+                return g.T
+            raise InputError(name, f"must have {n} rows (stations), got {g.shape}")
+        return g
+    a = np.asarray(g, dtype=float)
+    if a.ndim == 1:
+        a = a.reshape(-1, 1)
+    if a.shape[0] != n:
+        raise InputError(name, f"must have {n} rows (stations), got {a.shape}")
+    return ca.DM(a)
+
+
+def _as_row(v, k, name):
+    if isinstance(v, (ca.MX, ca.SX, ca.DM)):
+        v = ca.reshape(v, 1, v.numel())
+        return ca.repmat(v, 1, k) if v.numel() == 1 and k > 1 else v
+    a = np.atleast_1d(np.asarray(v, dtype=float)).reshape(1, -1)
+    if a.size == 1 and k > 1:
+        a = np.repeat(a, k, axis=1)
+    if a.size != k:
+        raise InputError(name, f"must have one value per operating point ({k}), got {a.size}")
+    return ca.DM(a)
+
+
+def apply_influences(influences, gamma, omega_radps, v_wake_mps):
+    """Σ_r C1_r (Γ_r Ω_r/V_w,r) + C2_r Γ_r as a 3M×K matrix (rows point-major)."""
+    total = 0
+    for (c1, c2), g, om, vw in zip(influences, gamma, omega_radps, v_wake_mps):
+        n = c1.shape[1]
+        g = _as_nk(g, n, "gamma")
+        k = g.shape[1]
+        ratio = _as_row(om, k, "omega_radps") / _as_row(vw, k, "v_wake_mps")
+        total = total + ca.mtimes(c1, g * ca.repmat(ratio, n, 1)) + ca.mtimes(c2, g)
+    return total
+
+
+def external_velocity(points, rotors, gamma, omega_radps, v_wake_mps, *, model: str = "mean",
+                      influences=None, phases: int = 1, n_rotations=DEFAULT_ROTATIONS,
+                      steps_per_rotation=DEFAULT_STEPS_PER_ROTATION, phase_rad=0.0):
+    """Wake-induced velocity of all ``rotors`` at ``points`` for K operating points.
+
+    points: 3×M (numbers or MX).  rotors: list of WakeRotor.  gamma: per rotor N×K
+    blade circulation (m²/s).  omega_radps, v_wake_mps: per rotor K values.
+    model: "mean" (averaged wake, NLP form; ``influences`` may be passed to reuse
+    the per-design matrices) or "full" (helical fixed wake; ``phases`` snapshots
+    averaged, each ``n_rotations`` × ``steps_per_rotation`` rings per blade and
+    element, blade 0 at ``phase_rad``).
+    Returns (vx, vy, vz), each M×K (NumPy for numeric input, MX otherwise).
+    """
+    if len(gamma) != len(rotors) or len(omega_radps) != len(rotors) or len(v_wake_mps) != len(rotors):
+        raise InputError("gamma", "give one entry per rotor in gamma, omega_radps and v_wake_mps")
+    pts = points if isinstance(points, (ca.MX, ca.SX, ca.DM)) else ca.DM(np.asarray(points, float).reshape(3, -1))
+    m = pts.shape[1]
+    if model == "mean":
+        infl = influences if influences is not None else wake_influences(pts, rotors)
+        u = apply_influences(infl, gamma, omega_radps, v_wake_mps)
+    elif model == "full":
+        cols = None
+        for r, g, om, vw in zip(rotors, gamma, omega_radps, v_wake_mps):
+            g = _as_nk(g, r.n_stations, "gamma")
+            k = g.shape[1]
+            om = _as_row(om, k, "omega_radps")
+            vw = _as_row(vw, k, "v_wake_mps")
+            cr = []
+            for j in range(k):
+                v = full_wake_velocity(pts, r, g[:, j], om[j], vw[j], phases=phases, n_rotations=n_rotations,
+                                       steps_per_rotation=steps_per_rotation, phase_rad=phase_rad)
+                v = v if isinstance(v, (ca.MX, ca.SX)) else ca.DM(v)
+                cr.append(ca.reshape(v, 3 * m, 1))
+            cr = ca.horzcat(*cr)
+            cols = cr if cols is None else cols + cr
+        u = cols
+    else:
+        raise InputError("model", f"'mean' or 'full', got {model!r}")
+    vx, vy, vz = u[0::3, :], u[1::3, :], u[2::3, :]
+    if isinstance(u, ca.DM):
+        return np.array(vx), np.array(vy), np.array(vz)
+    return vx, vy, vz
