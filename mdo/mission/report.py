@@ -106,9 +106,10 @@ def _plot(mission, names, vals, path, solution):
         a.grid(alpha=0.3)
     for a in ax[1]:
         a.set_xlabel("time (min)")
-    top = ax[0, 0].get_ylim()[1]
-    for i, g in enumerate(segs):
-        ax[0, 0].text(t[g.node0], top, " " + g.segment.name, rotation=90, va="top", ha="left", fontsize=7,
+    lo, top = ax[0, 0].get_ylim()
+    for i, g in enumerate(segs):   # staggered so that short segments do not overwrite each other
+        y = top - (0.0 if i % 2 == 0 else 0.09 * (top - lo))
+        ax[0, 0].text(t[g.node0], y, " " + g.segment.name, rotation=90, va="top", ha="left", fontsize=7,
                       color=f"C{i % 10}")
     energy = float(np.asarray(solution.value(mission.energy_used_J))) / KWH
     fig.suptitle(f"{mission.name}: {mission.vehicle.name}, battery energy {energy:.3f} kWh, "

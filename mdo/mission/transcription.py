@@ -374,12 +374,21 @@ class Mission:
             time_s=num["time_s"], altitude_m=num["altitude_m"], speed_mps=num["speed_mps"],
             flight_path_angle_rad=num["flight_path_angle_rad"], acceleration_mps2=num["acceleration_mps2"],
             flight_path_angle_rate_radps=num["flight_path_angle_rate_radps"], body_angle_rad=theta_in.copy(),
-            pitch_rate_radps=np.zeros(self.K), parameters=params, states={}, segment=self.segment_of_node,
-            labels=self.labels)
+            pitch_rate_radps=np.zeros(self.K), parameters=params, states=self._state_guess_rows(),
+            segment=self.segment_of_node, labels=self.labels)
         g = dict(self.vehicle.initial_guess(c))
         if "body_angle_rad" not in g:
             g["body_angle_rad"] = np.where(np.isnan(theta_in), 0.0, theta_in)
         return g
+
+    def _state_guess_rows(self):
+        """Each state at its initial value (or mid-bounds) at every node, for the vehicle's guess."""
+        out = {}
+        for st in self.vehicle.states():
+            x0 = st.initial if st.initial is not None else 0.5 * (
+                (st.lower if np.isfinite(st.lower) else 0.0) + (st.upper if np.isfinite(st.upper) else 0.0))
+            out[st.name] = np.full(self.K, float(x0))
+        return out
 
     def _defect_matrices(self):
         """Sparse (N_def x N_state) and (N_def x K) matrices of the state defects."""
