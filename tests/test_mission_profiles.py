@@ -15,7 +15,7 @@ from mdo.mission import Mission
 from mdo.mission import segments as S
 from mdo.mission.profiles import evtol_mission, ga_mission
 from mdo.nlp import Problem, load_problem_file, run_problem
-from mdo.vehicle import G0, NodeEvaluation, Output, PolarVehicle, ResidualGroup, State, Unknown
+from mdo.vehicle import G0, NodeEvaluation, Output, PolarVehicle, ResidualGroup, State, Unknown, Vehicle
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -129,6 +129,7 @@ class TwoRotorVehicle:
 
 def test_a_vehicle_written_against_the_protocol(tmp_path):
     veh = TwoRotorVehicle()
+    assert isinstance(veh, Vehicle)                               # the runtime-checkable protocol
     segs = [S.LinearSpeedConstantRate("CL", altitude_start_m=100.0, altitude_end_m=600.0, speed_start_mps=40.0,
                                       speed_end_mps=50.0, climb_rate_mps=2.5),
             S.ConstantSpeedConstantAltitude("CR", distance_m=10e3)]

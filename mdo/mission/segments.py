@@ -36,7 +36,7 @@ by definition, so speed jumps at their ends as in SUAVE's vertical segments).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 

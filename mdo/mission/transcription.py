@@ -42,7 +42,7 @@ import numpy as np
 from ..core.collocation import Collocation
 from ..core.errors import InputError
 from ..core.units import KWH, MINUTE, NMI
-from ..vehicle.base import G0, NodeConditions, Output, ResidualGroup
+from ..vehicle.base import G0, NodeConditions, Output
 from .segments import Kinematics, Segment
 
 __all__ = ["Mission", "DEFAULT_NODES", "STANDARD_PARAMETERS"]

@@ -55,7 +55,7 @@ the normal component of thrust, ...).  The mission closes Newton's law::
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any, Callable, Protocol, Sequence, runtime_checkable
+from typing import Any, Protocol, Sequence, runtime_checkable
 
 import casadi as ca
 import numpy as np
