@@ -1,0 +1,1 @@
+"""Lifting surfaces: geometry, vortex lattice, drag build-up."""

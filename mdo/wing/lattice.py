@@ -1,0 +1,158 @@
+"""The vortex lattice of one surface half, built as SX expressions of the design.
+
+For a :class:`~mdo.wing.geometry.Surface` this module returns the lattice points
+of its original (right, or only) half in vehicle body axes:
+
+* ``nodes[r]`` (3 x E), r = 0..nc-1: the bound-vortex points of chordwise row r
+  on each spanwise strip edge, at x/c = (r + 1/4)/nc on the camber line;
+  ``nodes[nc]``: the trailing-edge points (where the trailing legs leave along +x);
+* ``cp`` (3 x S*nc): control points, x/c = (r + 3/4)/nc at mid-strip, and
+  ``tangent``: the chordwise camber-line tangent there (for the normals);
+* edge data: chord, eta and leading-edge points.
+
+Panels are numbered strip-major: panel j = s*nc + r (strip s from the root out,
+row r from the leading edge back).  Horseshoe (s, r) of the original half runs
+infinity -> TE(s) -> ... -> node(s, r) -> node(s+1, r) -> ... -> TE(s+1) ->
+infinity, with the chordwise legs following the camber line to the trailing
+edge (as in AVL), so that its bound segment points outboard (+y on the right
+wing) and a positive circulation lifts.  The mirror image uses the reflected
+points in reversed order (vorticity is a pseudovector: the image of a bound
+vortex along +y at +y is a bound vortex along +y at -y).
+"""
+from __future__ import annotations
+
+import casadi as ca
+import numpy as np
+
+from .camber import camber_line
+from .geometry import Params, Surface, interpolation_weights
+
+__all__ = ["surface_half", "rotation_matrices"]
+
+
+def rotation_matrices(incidence, vertical: bool):
+    """(R, V): nose-up rotation about y by ``incidence`` and the +90 deg roll of a vertical surface."""
+    ci, si = ca.cos(incidence), ca.sin(incidence)
+    R = ca.vertcat(ca.horzcat(ci, 0, si), ca.horzcat(0, 1, 0), ca.horzcat(-si, 0, ci))
+    V = ca.SX(np.array([[1, 0, 0], [0, 0, -1], [0, 1, 0]], dtype=float)) if vertical else ca.SX.eye(3)
+    return R, V
+
+
+def surface_half(s: Surface, p: Params) -> dict:
+    """SX lattice of the original half of surface ``s`` (see module doc)."""
+    nm = s.name
+    span = p(s.span, f"{nm}.span")
+    c_root = p(s.root_chord, f"{nm}.root_chord")
+    semispan = span / 2 if s.mirrored else span
+    K = len(s.sections)
+    eta_k = np.array([sec.eta for sec in s.sections], dtype=float)
+    chord_k = [c_root * p(sec.chord, f"{nm}.sections[{k}].chord") for k, sec in enumerate(s.sections)]
+    twist_k = [p(sec.twist, f"{nm}.sections[{k}].twist") for k, sec in enumerate(s.sections)]
+    sweep = [p(v, f"{nm}.sweep[{k}]") for k, v in enumerate(s.sweep)]
+    dih = [p(v, f"{nm}.dihedral[{k}]") for k, v in enumerate(s.dihedral)]
+    origin = [p(v, f"{nm}.origin[{k}]") for k, v in enumerate(s.origin)]
+    pivot = [p(v, f"{nm}.pivot[{k}]") for k, v in enumerate(s.pivot)]
+    incidence = p(s.incidence, f"{nm}.incidence") + p(s.tilt, f"{nm}.tilt")
+
+    # section quarter-chord points (local frame: root LE at 0, span along +y)
+    y_k = [e * semispan for e in eta_k]
+    xq_k, z_k = [0.25 * chord_k[0]], [0.0]
+    for k in range(K - 1):
+        dy = y_k[k + 1] - y_k[k]
+        xq_k.append(xq_k[k] + ca.tan(sweep[k]) * dy)
+        z_k.append(z_k[k] + ca.tan(dih[k]) * dy)
+    phi_k = [dih[0]] + [0.5 * (dih[k - 1] + dih[k]) for k in range(1, K - 1)] + [dih[-1]]
+
+    # strip edges: anchors (sections and breaks) with cosine spacing in between
+    anchors = [(nom, p(val, f"{nm}.anchor[{i}]")) for i, (nom, val) in enumerate(s.anchors())]
+    counts = s.panel_counts()
+    edges = []
+    for i, n in enumerate(counts):
+        a, b = anchors[i][1], anchors[i + 1][1]
+        g = s.spacing_fractions(n, starts_at_root=(i == 0))
+        for j, gj in enumerate(g):
+            if i > 0 and j == 0:
+                continue
+            edges.append(a if j == 0 else b if j == n else a + (b - a) * float(gj))
+    E = len(edges)
+    S = E - 1
+    nc = s.nchord
+
+    # chordwise stations and camber (numbers) per section
+    xi_b = (np.arange(nc) + 0.25) / nc
+    xi_c = (np.arange(nc) + 0.75) / nc
+    cambers = [camber_line(sec.airfoil if sec.airfoil is not None else s.airfoil) for sec in s.sections]
+    zb_k = np.array([[cl.z(x) for x in xi_b] for cl in cambers])        # K x nc
+    zc_k = np.array([[cl.z(x) for x in xi_c] for cl in cambers])
+    sc_k = np.array([[cl.slope(x) for x in xi_c] for cl in cambers])
+
+    # edge quantities
+    pts = {r: [] for r in range(nc + 1)}
+    cpts = {r: [] for r in range(nc)}
+    tans = {r: [] for r in range(nc)}
+    le, chord_e = [], []
+    for e in edges:
+        w = interpolation_weights(e, eta_k, s.eta_smoothing)
+
+        def mix(vals):
+            return sum(wk * v for wk, v in zip(w, vals) if not (isinstance(wk, float) and wk == 0.0))
+
+        c = mix(chord_k)
+        th = mix(twist_k)
+        ph = mix(phi_k)
+        q = ca.vertcat(mix(xq_k), e * semispan, mix(z_k))
+        t = ca.vertcat(ca.cos(th), ca.sin(th) * ca.sin(ph), -ca.sin(th) * ca.cos(ph))
+        u = ca.vertcat(ca.sin(th), -ca.cos(th) * ca.sin(ph), ca.cos(th) * ca.cos(ph))
+        for r in range(nc):
+            zb = mix(zb_k[:, r])
+            zc = mix(zc_k[:, r])
+            sc = mix(sc_k[:, r])
+            pts[r].append(q + (xi_b[r] - 0.25) * c * t + c * zb * u)
+            cpts[r].append(q + (xi_c[r] - 0.25) * c * t + c * zc * u)
+            tans[r].append(t + sc * u)
+        pts[nc].append(q + 0.75 * c * t)
+        le.append(q - 0.25 * c * t)
+        chord_e.append(c)
+
+    R, V = rotation_matrices(incidence, s.vertical)
+    RV = ca.mtimes(R, V)
+    o = ca.vertcat(*origin)
+    pv = ca.vertcat(*pivot)
+
+    def to_global(cols):
+        P = ca.horzcat(*cols)
+        return o + pv + ca.mtimes(R, ca.mtimes(V, P) - pv)   # rotate about the pivot
+
+    nodes = [to_global(pts[r]) for r in range(nc + 1)]
+    cp_cols, tan_cols = [], []
+    for si in range(S):
+        for r in range(nc):
+            cp_cols.append(0.5 * (cpts[r][si] + cpts[r][si + 1]))
+            tan_cols.append(0.5 * (tans[r][si] + tans[r][si + 1]))
+    cp = to_global(cp_cols)
+    tangent = ca.mtimes(RV, ca.horzcat(*tan_cols))
+    return {
+        "nodes": nodes,
+        "cp": cp,
+        "tangent": tangent,
+        "le": to_global(le),
+        "edge_chord": ca.horzcat(*chord_e),
+        "edge_eta": ca.horzcat(*[ca.SX(e) for e in edges]),
+        "E": E, "S": S, "nc": nc,
+        "strip_airfoil": _strip_airfoils(s, [a[0] for a in anchors], counts),
+    }
+
+
+def _strip_airfoils(s: Surface, anchor_nominal, counts):
+    """Airfoil name of each strip: that of the section at the strip's inboard end (nominal)."""
+    names = []
+    eta_k = [sec.eta for sec in s.sections]
+    for i, n in enumerate(counts):
+        a, b = anchor_nominal[i], anchor_nominal[i + 1]
+        g = s.spacing_fractions(n, starts_at_root=(i == 0))
+        for j in range(n):
+            mid = a + (b - a) * 0.5 * (g[j] + g[j + 1])
+            k = int(np.clip(np.searchsorted(eta_k, mid, side="right") - 1, 0, len(eta_k) - 2))
+            sec = s.sections[k]
+            names.append(sec.airfoil if sec.airfoil is not None else s.airfoil)
+    return names
