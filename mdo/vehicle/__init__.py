@@ -2,9 +2,11 @@
 
 ``base`` defines the contract between a mission and a vehicle (unknowns, states,
 residual groups, the batched node evaluation); ``polar`` is a simple vehicle with
-a fixed drag polar and fixed efficiencies, for quick studies and tests.
+a fixed drag polar and fixed efficiencies, for quick studies and tests;
+``config``/``catalog`` hold the numbers of the paper's aircraft (GA-2P, GA-8P,
+TTW) and ``mass`` the mass build-up that responds to the design variables.
 """
-from . import base, polar
+from . import base, catalog, config, mass, polar
 from .base import (
     G0,
     NodeConditions,
@@ -17,6 +19,9 @@ from .base import (
     path_components,
     rotate_to_path,
 )
+from .catalog import VEHICLES, ga2p, ga8p, ttw
+from .config import BatteryConfig, FuselageConfig, RotorGroupConfig, VehicleConfig, WingConfig
+from .mass import MassDesign, mass_table_markdown, mass_terms, solve_togw, togw_residual, total_mass
 from .polar import PolarVehicle
 
 __all__ = [
@@ -24,4 +29,7 @@ __all__ = [
     "G0", "NodeConditions", "NodeEvaluation", "Output", "ResidualGroup", "State", "Unknown", "Vehicle",
     "path_components", "rotate_to_path",
     "PolarVehicle",
+    "catalog", "config", "mass", "VEHICLES", "ga2p", "ga8p", "ttw",
+    "BatteryConfig", "FuselageConfig", "RotorGroupConfig", "VehicleConfig", "WingConfig",
+    "MassDesign", "mass_table_markdown", "mass_terms", "solve_togw", "togw_residual", "total_mass",
 ]
