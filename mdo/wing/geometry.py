@@ -14,9 +14,14 @@ slipstream whose position is a design variable).
 Conventions (as AVL): body axes x aft, y right, z up; angles in rad.  ``span`` of
 a mirrored surface is the projected tip-to-tip span (y extent), of an unmirrored
 surface its root-to-tip extent (height of a vertical tail).  Sweep is that of
-the quarter-chord line; twist and incidence are positive nose up, twist is a
-rotation about the section's quarter-chord point about the local spanwise axis
-(so the quarter-chord line, and hence the sweep, is unchanged by twist).
+the quarter-chord line.  Sections are streamwise cuts (x-z planes of the
+surface's own frame, as in SUAVE), so that the two halves of a mirrored surface
+share their root section exactly even with dihedral; twist and incidence are
+positive nose up, twist a rotation of the section in its plane about its
+quarter-chord point (the quarter-chord line, hence the sweep, is unchanged by
+twist).  With dihedral phi the twist seen normal to the surface is
+atan(tan(twist) cos(phi)) (AVL's Ainc rotates about the inclined spanwise axis
+instead: AVL's Ainc = atan(tan(twist) cos(phi))).
 Geometry between sections is linear in ``eta`` (chord, twist, quarter-chord
 point, dihedral angle of the section plane, camber line), as in AVL and SUAVE.
 
@@ -65,7 +70,7 @@ class Section:
 
     eta     : spanwise station, fraction of the semispan (0 root, 1 tip); a number.
     chord   : chord as a fraction of the surface's root chord (float or expression).
-    twist   : rad, positive nose up, about the section's quarter chord.
+    twist   : rad, positive nose up, in the streamwise plane about the section's quarter chord.
     airfoil : name of the section (camber line, profile drag); None = surface default.
     """
     eta: float

@@ -61,7 +61,6 @@ def surface_half(s: Surface, p: Params) -> dict:
         dy = y_k[k + 1] - y_k[k]
         xq_k.append(xq_k[k] + ca.tan(sweep[k]) * dy)
         z_k.append(z_k[k] + ca.tan(dih[k]) * dy)
-    phi_k = [dih[0]] + [0.5 * (dih[k - 1] + dih[k]) for k in range(1, K - 1)] + [dih[-1]]
 
     # strip edges: anchors (sections and breaks) with cosine spacing in between
     anchors = [(nom, p(val, f"{nm}.anchor[{i}]")) for i, (nom, val) in enumerate(s.anchors())]
@@ -99,10 +98,10 @@ def surface_half(s: Surface, p: Params) -> dict:
 
         c = mix(chord_k)
         th = mix(twist_k)
-        ph = mix(phi_k)
         q = ca.vertcat(mix(xq_k), e * semispan, mix(z_k))
-        t = ca.vertcat(ca.cos(th), ca.sin(th) * ca.sin(ph), -ca.sin(th) * ca.cos(ph))
-        u = ca.vertcat(ca.sin(th), -ca.cos(th) * ca.sin(ph), ca.cos(th) * ca.cos(ph))
+        # streamwise (x-z plane) section rotated nose-up by the twist about its quarter chord
+        t = ca.vertcat(ca.cos(th), 0, -ca.sin(th))
+        u = ca.vertcat(ca.sin(th), 0, ca.cos(th))
         for r in range(nc):
             zb = mix(zb_k[:, r])
             zc = mix(zc_k[:, r])

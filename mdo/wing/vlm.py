@@ -90,6 +90,23 @@ def _semi_column(n_cp: int) -> ca.Function:
 
 
 @functools.lru_cache(maxsize=None)
+def _velocity_columns(n_pts: int, semi: bool) -> ca.Function:
+    """(P[3 x n], A[3], B[3] or nothing, core) -> vx, vy, vz [n x 1]: velocity of a unit filament."""
+    P = ca.SX.sym("P", 3, n_pts)
+    A = ca.SX.sym("A", 3)
+    B = ca.SX.sym("B", 3)
+    core = ca.SX.sym("core")
+    if semi:
+        u = ca.DM([1.0, 0.0, 0.0])
+        v = semi_infinite_velocity().map(n_pts)(P, ca.repmat(A, 1, n_pts), ca.repmat(u, 1, n_pts), core)
+        ins, names = [P, A, core], ["P", "A", "core"]
+    else:
+        v = segment_velocity().map(n_pts)(P, ca.repmat(A, 1, n_pts), ca.repmat(B, 1, n_pts), core)
+        ins, names = [P, A, B, core], ["P", "A", "B", "core"]
+    return ca.Function("velocity_columns", ins, [v[0, :].T, v[1, :].T, v[2, :].T], names, ["vx", "vy", "vz"])
+
+
+@functools.lru_cache(maxsize=None)
 def _trefftz_column(n_mid: int) -> ca.Function:
     """(mid[2 x n], nds[2 x n], e[2], core) -> w[n x 1]: nds_s . v_2D(mid_s) of a unit 2-D vortex at e."""
     M = ca.SX.sym("mid", 2, n_mid)
@@ -166,7 +183,7 @@ class VLM:
 
     def __init__(self, surfaces, *, symmetric: bool | None = None, mach_ref: float = 0.0,
                  lift_velocity: str = "local", S_ref=None, c_ref=None, b_ref=None,
-                 r_ref=(0.0, 0.0, 0.0), trefftz: str = "linear"):
+                 r_ref=(0.0, 0.0, 0.0), trefftz: str = "linear", near_field: bool = False):
         if isinstance(surfaces, Surface):
             surfaces = [surfaces]
         self.surfaces = list(surfaces)
@@ -185,6 +202,7 @@ class VLM:
             raise InputError("trefftz", f"'linear' or 'midpoint', got {trefftz!r}")
         self.trefftz = trefftz
         self.trefftz_band = 6
+        self.near_field = bool(near_field)
         if symmetric is None:
             symmetric = all(s.mirrored for s in self.surfaces)
         self.symmetric = bool(symmetric)
@@ -202,6 +220,7 @@ class VLM:
         self._geo = dict(zip(self.geometry_function.name_out(),
                              self.geometry_function.call([p.value_vector()])))
         self.A = self._influence_matrix()
+        self.V_ind = self._bound_velocity_matrices() if self.near_field else None
 
     # --- lattice assembly ------------------------------------------------------------------
     def _build_halves(self, p: Params):
@@ -476,6 +495,23 @@ class VLM:
                                if k != m and chain_of[k] == chain_of[m] and abs(k - m) <= band]
         return seg_a, seg_b, rows, cols, vals
 
+    def _bound_velocity_matrices(self):
+        """(Vx, Vy, Vz), each N x N: velocity at the bound midpoints per unit circulation (stretched x)."""
+        g = self._geo
+        b = self.beta_ref
+        stretch = ca.DM(np.diag([1.0 / b, 1.0, 1.0]))
+        P = ca.mtimes(stretch, g["rb"])
+        N = self.n_panels
+        seg = _velocity_columns(N, False).map("segv_map", "serial", self.n_finite, [0], [])
+        semi = _velocity_columns(N, True).map("semiv_map", "serial", self.n_semi, [0], [])
+        out = []
+        WF = seg(P, ca.mtimes(stretch, g["fA"]), ca.mtimes(stretch, g["fB"]), g["fcore"])
+        WS = semi(P, ca.mtimes(stretch, g["sA"]), g["score"])
+        for i in range(3):
+            Vi = ca.mtimes(WF[i], self.MF.T) + ca.mtimes(WS[i], self.MS.T)
+            out.append(Vi / b if i == 0 else Vi)
+        return out
+
     def trefftz_matrix(self, scheme: str | None = None):
         """Q (strips x strips, all halves) with D_i = rho * Gs^T Q Gs.
 
@@ -598,6 +634,11 @@ class VLM:
         Ux = ca.mtimes(ones_N, Vinf[0]) + bx
         Uy = ca.mtimes(ones_N, Vinf[1]) + by
         Uz = ca.mtimes(ones_N, Vinf[2]) + bz
+        U_ext = (Ux, Uy, Uz)
+        if self.near_field:   # the wing's own induced velocity at the bound midpoints (AVL)
+            Ux = Ux + ca.mtimes(self.V_ind[0], Gam)
+            Uy = Uy + ca.mtimes(self.V_ind[1], Gam)
+            Uz = Uz + ca.mtimes(self.V_ind[2], Gam)
         l = g["lb"]
         lx, ly, lz = (l[i, :].T for i in range(3))
         rG = _rs(Gam, rho)
@@ -618,11 +659,12 @@ class VLM:
         Q = self.trefftz_matrix()
         Gs = ca.mtimes(self.TS, Gam)
         Di_ff = rho * ca.sum1(Gs * ca.mtimes(Q, Gs))
-        D_near = sum(F[i] * xw[i] for i in range(3))        # near-field x-force: external velocity only
-        F = [F[i] + Di_ff * xw[i] for i in range(3)]
+        D_near = sum(F[i] * xw[i] for i in range(3))   # near-field drag: external (and, near_field, own) velocity
+        if not self.near_field:
+            F = [F[i] + Di_ff * xw[i] for i in range(3)]
         L = sum(F[i] * zw[i] for i in range(3))
         Y = sum(F[i] * yw[i] for i in range(3))
-        Di = Di_ff + D_near
+        Di = D_near if self.near_field else Di_ff + D_near
         q = 0.5 * rho * V * V
         S, c, b = g["S_ref"], g["c_ref"], g["b_ref"]
         qS = q * S
@@ -630,7 +672,8 @@ class VLM:
             "Gamma": Gam,
             "F": ca.vertcat(*F), "M": ca.vertcat(*M),
             "L": L, "D_i": Di, "Y": Y,
-            "CL": L / qS, "CDi": Di / qS, "CDi_ff": Di_ff / qS, "CD_ext": D_near / qS,
+            "CL": L / qS, "CDi": Di / qS, "CDi_ff": Di_ff / qS,
+            "CD_ext": (0 * D_near if self.near_field else D_near) / qS, "CDi_near": D_near / qS,
             "CY": Y / qS, "Cm": M[1] / (qS * c), "Cl_roll": M[0] / (qS * b), "Cn_yaw": M[2] / (qS * b),
         }
         AR = b * b / S
@@ -651,6 +694,7 @@ class VLM:
         qcw = _rs(ca.mtimes(cw, ca.DM.ones(1, Kn)), q)
         out["cl"] = lift_s / qcw
         out["ccl_cref"] = _cs(g["strip_chord"].T / c, out["cl"])
+        Ux, Uy, Uz = U_ext
         U2 = ca.mtimes(self.strip_sum, Ux * Ux + Uy * Uy + Uz * Uz) / \
             ca.mtimes(self.strip_sum, ca.DM.ones(N, Kn))
         out["V_local"] = ca.sqrt(U2)
