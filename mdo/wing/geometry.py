@@ -87,6 +87,7 @@ class Surface:
             proportion to their length) or a list with one count per interval.
     nchord: chordwise panels (uniform chordwise spacing, the 1/4-3/4 rule).
     core  : vortex-core size as a fraction of the local strip width (kernels.py).
+    thickness_to_chord : only for the flat-plate profile-drag fallback (drag.py).
     """
     name: str
     span: Any
@@ -109,6 +110,7 @@ class Surface:
     anchor_sections: bool = True
     core: float = 0.05
     eta_smoothing: float = 1e-3
+    thickness_to_chord: float = 0.12
 
     def __post_init__(self):
         self.sections = list(self.sections)

@@ -618,8 +618,10 @@ class VLM:
             Gam = ca.solve(A, rhs, linear_solver or "lapacklu")
         else:
             Gam = ca.DM(np.linalg.solve(np.array(A), np.array(rhs)))
-        return self.loads(Gam, alpha=alpha, beta=beta, V=V, rho=rho, vb=(bx, by, bz),
-                          axes=(xw, yw, zw))
+        out = self.loads(Gam, alpha=alpha, beta=beta, V=V, rho=rho, vb=(bx, by, bz),
+                         axes=(xw, yw, zw))
+        out.update(alpha=alpha, beta=beta, V=V, rho=rho, mach=mach)
+        return out
 
     def loads(self, Gam, *, alpha, beta, V, rho, vb, axes) -> dict:
         g = self._geo

@@ -1,0 +1,291 @@
+"""Drag build-up: profile drag of lifting surfaces (strip method) and parasite drag of bodies.
+
+Profile drag, strip method.  Each VLM strip is a 2-D section at its own lift
+coefficient ``cl_local`` (lift per unit span over the *local* dynamic pressure
+and chord, so a blown strip is a section in the slipstream) and its own
+Reynolds number ``Re = rho V_local c / mu``; its drag per unit span is
+``q_local c cd(cl_local, Re)``.  The section law ``cd(cl, Re)`` is the inverse
+polar of the airfoil surrogate (:mod:`mdo.airfoil`, issue 3): for each of 17
+Reynolds numbers (1e4 .. 1e8, log-spaced) the surrogate is sampled over its
+attached branch (from the negative to the positive cl maximum, 0.05 deg steps),
+``cd`` is tabulated against ``cl`` on a fixed grid and, beyond the attached range,
+continued by ``cd_end + s (cl - cl_end) + k (cl - cl_end)^2`` (slope s of the
+polar's end, k = 2: the stall drag rise a linear VLM cannot see); the table is
+one cubic B-spline in (cl, ln Re) (``casadi.interpolant``), C2 and cheap inside
+an NLP.  Mach number is not a table dimension (the surrogate's compressibility
+correction changes cd by < 1 % below M 0.3; the missions fly M < 0.3).
+Strips whose airfoil has no polar (e.g. a symmetric tail section) use Raymer's
+flat-plate build-up ``cd = Cf(Re) FF_wing (S_wet/S)`` with the surface's t/c.
+
+Bodies (fuselage, nacelles, booms): Raymer, *Aircraft Design: A Conceptual
+Approach*, 6th ed., sec. 12.5 (component build-up method)::
+
+    D = q Cf FF Q S_wet
+    Cf_lam  = 1.328 / sqrt(Re)                                   (laminar flat plate)
+    Cf_turb = 0.455 / ((log10 Re)^2.58 (1 + 0.144 M^2)^0.65)     (turbulent, Schlichting fit)
+    Cf      = f_lam Cf_lam + (1 - f_lam) Cf_turb                  (laminar fraction f_lam)
+    Re      = min(rho V l / mu, 38.21 (l/k)^1.053)               (roughness cut-off, k = 6.34e-6 m, smooth paint)
+    FF_fuselage = 1 + 60/f^3 + f/400,   FF_nacelle = 1 + 0.35/f,  f = l/d
+    FF_wing     = (1 + 0.6/(x/c)_m t/c + 100 (t/c)^4) 1.34 M^0.18 cos(sweep_m)^0.28
+    S_wet(body) = pi d l (1 - 2/f)^(2/3) (1 + 1/f^2)            (Torenbeek 1982, app. F; fuselage)
+    S_wet(boom, nacelle) = pi d l                                   (cylinder)
+
+Smooth where IPOPT looks: ``Re -> sqrt(Re^2 + 1e4^2)`` and ``M -> sqrt(M^2 + 0.01^2)``
+keep log10 and M^0.18 finite and differentiable down to hover (V = 0, where q = 0
+anyway), and the roughness cut-off is a smooth minimum of width 5 % of the
+cut-off Reynolds number.
+"""
+from __future__ import annotations
+
+import functools
+import math
+from dataclasses import dataclass
+
+import casadi as ca
+import numpy as np
+
+from ..core.errors import InputError, check_positive, check_range
+from ..core.smooth import is_symbolic, smooth_min, xp
+
+__all__ = [
+    "section_drag_table", "section_cd", "profile_drag", "skin_friction", "form_factor_body",
+    "form_factor_nacelle", "form_factor_wing", "body_wetted_area", "Body", "body_drag",
+]
+
+RE_GRID = np.exp(np.linspace(np.log(1e4), np.log(1e8), 17))
+CL_GRID = np.round(np.arange(-1.2, 2.4001, 0.05), 6)
+STALL_CURVATURE = 2.0
+ROUGHNESS_M = 6.34e-6          # Raymer Table 12.5: smooth paint, 2.08e-5 ft
+
+
+def _lib(*args):
+    return xp(*args)
+
+
+# --- section law cd(cl, Re) -------------------------------------------------------------------
+def _attached_branch(af, re):
+    a = np.radians(np.arange(-25.0, 30.0001, 0.05))
+    cl, cd, _ = af.coefficients(a, np.full_like(a, re), np.zeros_like(a))
+    i0 = int(np.argmin(np.abs(a - af.zero_lift_angle(min(max(re, 2e4), 1e7)))))
+    hi = i0
+    while hi + 1 < len(a) and cl[hi + 1] > cl[hi]:
+        hi += 1
+    lo = i0
+    while lo - 1 >= 0 and cl[lo - 1] < cl[lo]:
+        lo -= 1
+    return cl[lo:hi + 1], cd[lo:hi + 1]
+
+
+def _column(cl_b, cd_b):
+    """cd on CL_GRID from one attached branch, with the quadratic stall continuation."""
+    span = cl_b[-1] - cl_b[0]
+    margin = min(0.05, 0.1 * span)
+    lo_c, hi_c = cl_b[0] + margin, cl_b[-1] - margin
+    inside = (cl_b >= lo_c) & (cl_b <= hi_c)
+    cl_i, cd_i = cl_b[inside], cd_b[inside]
+    out = np.interp(CL_GRID, cl_i, cd_i)
+    for end, sign in ((hi_c, 1), (lo_c, -1)):
+        sel = (cl_i >= end - 0.1) if sign > 0 else (cl_i <= end + 0.1)
+        s = np.polyfit(cl_i[sel], cd_i[sel], 1)[0] if sel.sum() >= 2 else 0.0
+        cd_end = np.interp(end, cl_i, cd_i)
+        beyond = (CL_GRID > end) if sign > 0 else (CL_GRID < end)
+        d = CL_GRID[beyond] - end
+        out[beyond] = cd_end + s * d + STALL_CURVATURE * d * d
+    return out
+
+
+@functools.lru_cache(maxsize=None)
+def section_drag_table(airfoil: str) -> ca.Function:
+    """``cd(cl, ln Re)`` of airfoil ``airfoil`` as a casadi B-spline Function (see module doc)."""
+    from ..airfoil import Airfoil   # the airfoil discipline (issue 3)
+    af = Airfoil.from_name(airfoil)
+    table = np.column_stack([_column(*_attached_branch(af, re)) for re in RE_GRID])
+    return ca.interpolant(f"cd_of_cl_{af.key}", "bspline", [CL_GRID, np.log(RE_GRID)],
+                          table.ravel(order="F"))
+
+
+def _has_polar(airfoil) -> bool:
+    if airfoil is None:
+        return False
+    try:
+        from ..airfoil import Airfoil
+        Airfoil.from_name(airfoil)
+        return True
+    except (ImportError, InputError):
+        return False
+
+
+def section_cd(airfoil, cl, reynolds, mach=0.0, thickness_to_chord=0.12):
+    """Section profile drag at lift coefficient ``cl`` and ``reynolds`` (elementwise).
+
+    Floats, NumPy arrays (same shape) or CasADi expressions.  Airfoils without a
+    polar use the flat-plate build-up of the module doc (then ``cl`` is ignored).
+    """
+    re_s = _smooth_re(reynolds)
+    if not _has_polar(airfoil):
+        m = _smooth_mach(mach)
+        return skin_friction(re_s, m) * form_factor_wing(thickness_to_chord, 0.3, m) * \
+            (1.977 + 0.52 * thickness_to_chord)
+    f = section_drag_table(airfoil)
+    if is_symbolic(cl, reynolds):
+        cl_ = cl if isinstance(cl, (ca.MX, ca.SX)) else ca.DM(np.asarray(cl, dtype=float))
+        lre = ca.log(re_s)
+        shape = cl_.shape if cl_.numel() >= (lre.numel() if hasattr(lre, "numel") else 1) else lre.shape
+        n = max(cl_.numel(), lre.numel() if hasattr(lre, "numel") else 1)
+        c = ca.repmat(ca.vec(cl_), n // cl_.numel(), 1) if cl_.numel() != n else ca.vec(cl_)
+        r = ca.repmat(ca.vec(lre), n // lre.numel(), 1) if lre.numel() != n else ca.vec(lre)
+        out = f.map(n)(ca.vertcat(c.T, r.T)) if n > 1 else f(ca.vertcat(c, r))
+        return ca.reshape(out, *shape)
+    cl_a = np.asarray(cl, dtype=float)
+    re_a = np.broadcast_to(np.log(np.asarray(re_s, dtype=float)), cl_a.shape)
+    pts = np.vstack([cl_a.ravel(), re_a.ravel()])
+    out = np.array(f.map(pts.shape[1])(pts)).reshape(cl_a.shape)
+    return float(out) if out.shape == () else out
+
+
+def profile_drag(vlm, result: dict, rho, mu, mach=0.0) -> dict:
+    """Strip-method profile drag of every surface of ``vlm`` for a :meth:`VLM.solve` result.
+
+    rho (kg/m^3), mu (Pa s), mach: scalars or 1 x K rows.  Returns D_p (1 x K, N,
+    along the freestream), CD_p (on the VLM's S_ref and freestream q), and per
+    strip cd, Re (n_strips x K).  In symmetric mode the left halves are included.
+    """
+    g = vlm.geometry
+    Kn = result["cl_local"].shape[1]
+    rho_r, mu_r = (_as_row(x, Kn) for x in (rho, mu))
+    Vl = result["V_local"]
+    c = g["strip_chord"].T
+    w = g["strip_width"].T
+    S = vlm.n_strips
+    ones_K = ca.DM.ones(1, Kn)
+    Re = Vl * ca.repmat(c, 1, Kn) * ca.repmat(rho_r / mu_r, S, 1)
+    cds = []
+    rows = []
+    for name in sorted(set(map(str, vlm.strip_airfoil))):
+        idx = [i for i, a in enumerate(vlm.strip_airfoil) if str(a) == name]
+        tc = [vlm.surfaces[vlm.strip_surface[i]].thickness_to_chord for i in idx]
+        af = None if name == "None" else name
+        cd_g = section_cd(af, result["cl_local"][idx, :], Re[idx, :], mach,
+                          thickness_to_chord=float(np.mean(tc)))
+        cds.append(cd_g)
+        rows += idx
+    perm = ca.DM.triplet(rows, list(range(S)), ca.DM.ones(S), S, S)   # back to strip order
+    cd = ca.mtimes(perm, ca.vertcat(*[ca.DM(x) if not isinstance(x, (ca.MX, ca.SX, ca.DM)) else x
+                                      for x in cds]))
+    q_loc = 0.5 * ca.repmat(rho_r, S, 1) * Vl * Vl
+    Dp = ca.mtimes(ca.DM.ones(1, S), q_loc * ca.repmat(c * w, 1, Kn) * cd)
+    if vlm.symmetric:
+        Dp = 2 * Dp
+    q_inf = 0.5 * rho_r * _as_row(result.get("V", ca.DM.ones(1, Kn)), Kn) ** 2
+    out = {"D_p": Dp, "cd": cd, "Re": Re}
+    if "V" in result:
+        out["CD_p"] = Dp / (q_inf * g["S_ref"])
+    return out
+
+
+def _as_row(x, K):
+    if isinstance(x, (ca.MX, ca.SX, ca.DM)):
+        x = x if x.shape[0] == 1 else x.T
+        return x if x.shape[1] == K else ca.repmat(x, 1, K)
+    a = np.atleast_1d(np.asarray(x, dtype=float)).ravel()
+    return ca.DM(np.broadcast_to(a, (K,))).T
+
+
+# --- component build-up (Raymer sec. 12.5) -------------------------------------------------------
+def _smooth_re(re):
+    return _lib(re).sqrt(re * re + 1e4 * 1e4)
+
+
+def _smooth_mach(m):
+    return _lib(m).sqrt(m * m + 0.01 * 0.01)
+
+
+def skin_friction(reynolds, mach=0.0, laminar_fraction=0.0):
+    """Flat-plate skin-friction coefficient (Raymer 12.5): laminar/turbulent mix."""
+    lib = _lib(reynolds, mach, laminar_fraction)
+    re = _smooth_re(reynolds)
+    lam = 1.328 / lib.sqrt(re)
+    turb = 0.455 / ((lib.log(re) / math.log(10.0)) ** 2.58 * (1 + 0.144 * mach * mach) ** 0.65)
+    return laminar_fraction * lam + (1 - laminar_fraction) * turb
+
+
+def cutoff_reynolds(length, roughness=ROUGHNESS_M):
+    """Raymer's subsonic cut-off Reynolds number 38.21 (l/k)^1.053 (surface roughness k, m)."""
+    return 38.21 * (length / roughness) ** 1.053
+
+
+def form_factor_body(fineness):
+    """Fuselage / smooth canopy: 1 + 60/f^3 + f/400 (Raymer 12.5)."""
+    return 1 + 60 / fineness**3 + fineness / 400
+
+
+def form_factor_nacelle(fineness):
+    """Nacelle / smooth external store: 1 + 0.35/f (Raymer 12.5)."""
+    return 1 + 0.35 / fineness
+
+
+def form_factor_wing(thickness_to_chord, x_max_thickness=0.3, mach=0.0, sweep_max_thickness=0.0):
+    """Wing, tail, strut: (1 + 0.6/(x/c)_m t/c + 100 (t/c)^4) 1.34 M^0.18 cos(L_m)^0.28 (Raymer 12.5)."""
+    lib = _lib(thickness_to_chord, mach, sweep_max_thickness)
+    tc = thickness_to_chord
+    m = _smooth_mach(mach)
+    return (1 + 0.6 / x_max_thickness * tc + 100 * tc**4) * 1.34 * m**0.18 * \
+        lib.cos(sweep_max_thickness) ** 0.28
+
+
+def body_wetted_area(length, diameter, kind="fuselage"):
+    """Wetted area (m^2): streamlined fuselage (Torenbeek) or cylinder (boom, nacelle)."""
+    if kind == "fuselage":
+        f = length / diameter
+        return math.pi * diameter * length * (1 - 2 / f) ** (2.0 / 3.0) * (1 + 1 / f**2)
+    return math.pi * diameter * length
+
+
+@dataclass
+class Body:
+    """A non-lifting component for the parasite-drag build-up.
+
+    kind: 'fuselage', 'nacelle' or 'boom'; Q: interference factor (Raymer:
+    fuselage 1.0, nacelle on the wing 1.3-1.5, boom ~1.0); count: identical copies.
+    """
+    name: str
+    length: float
+    diameter: float
+    kind: str = "fuselage"
+    interference: float = 1.0
+    laminar_fraction: float = 0.0
+    count: int = 1
+    wetted_area: float | None = None
+
+    def __post_init__(self):
+        check_positive(f"{self.name}.length", self.length, "m")
+        check_positive(f"{self.name}.diameter", self.diameter, "m")
+        if self.kind not in ("fuselage", "nacelle", "boom"):
+            raise InputError(f"{self.name}.kind", f"'fuselage', 'nacelle' or 'boom', got {self.kind!r}")
+        check_range(f"{self.name}.laminar_fraction", self.laminar_fraction, 0.0, 1.0)
+        if self.kind == "fuselage" and not is_symbolic(self.length) and self.length / self.diameter <= 2:
+            raise InputError(f"{self.name}.length", "fuselage fineness l/d must exceed 2")
+
+    @property
+    def fineness(self):
+        return self.length / self.diameter
+
+    def form_factor(self):
+        return form_factor_body(self.fineness) if self.kind == "fuselage" else form_factor_nacelle(self.fineness)
+
+    def s_wet(self):
+        return self.wetted_area if self.wetted_area is not None else \
+            body_wetted_area(self.length, self.diameter, self.kind)
+
+
+def body_drag(bodies, V, rho, mu, mach=0.0):
+    """Parasite drag (N) and drag area D/q (m^2) of ``bodies`` at speed V (m/s), any shape of V."""
+    total = 0.0
+    for b in bodies:
+        re = rho * V * b.length / mu
+        re_c = cutoff_reynolds(b.length)
+        re_eff = smooth_min(_smooth_re(re), re_c, 0.05 * re_c)
+        cf = skin_friction(re_eff, mach, b.laminar_fraction)
+        total = total + b.count * cf * b.form_factor() * b.interference * b.s_wet()
+    q = 0.5 * rho * V * V
+    return q * total, total
