@@ -71,7 +71,7 @@ def _cmd_discharge(args) -> int:
     buf = io.StringIO()
     buf.write("capacity_Ah,voltage_V\n")
     for a, b in zip(q, v):
-        buf.write(f"{a:.6f},{b:.6f}\n")
+        buf.write(f"{a:.10g},{b:.10g}\n")
     if args.out:
         with open(args.out, "w") as f:
             f.write(buf.getvalue())

@@ -54,6 +54,10 @@ NDARC_MOTOR_K_LB = 0.3928
 NDARC_MOTOR_EXPONENT = 0.8587
 
 
+def _symbolic(x) -> bool:
+    return isinstance(x, (ca.SX, ca.MX))
+
+
 def motor_mass_ndarc_kg(max_torque_Nm):
     """NDARC high-torque electric motor mass, kg, from the maximum torque in N m."""
     q_ftlb = max_torque_Nm / (u.FT * u.LBF)
@@ -159,11 +163,15 @@ def size_dc_motor(rated_power_W, rated_speed_radps, rated_voltage_V, rated_effic
     Numbers are checked (``InputError`` naming the field); CasADi expressions pass
     through so that the rating can depend on design variables.
     """
-    check_positive("rated_power_W", rated_power_W, "W")
-    check_positive("rated_speed_radps", rated_speed_radps, "rad/s")
-    check_positive("rated_voltage_V", rated_voltage_V, "V")
-    check_range("rated_efficiency", rated_efficiency, 0.5, 0.99)
-    check_range("copper_loss_fraction", copper_loss_fraction, 0.05, 0.95)
+    for name, value, unit in (("rated_power_W", rated_power_W, "W"),
+                              ("rated_speed_radps", rated_speed_radps, "rad/s"),
+                              ("rated_voltage_V", rated_voltage_V, "V")):
+        if not _symbolic(value):
+            check_positive(name, value, unit)
+    if not _symbolic(rated_efficiency):
+        check_range("rated_efficiency", rated_efficiency, 0.5, 0.99)
+    if not _symbolic(copper_loss_fraction):
+        check_range("copper_loss_fraction", copper_loss_fraction, 0.05, 0.95)
     p_in = rated_power_W / rated_efficiency
     i_r = p_in / rated_voltage_V
     loss = p_in - rated_power_W

@@ -255,11 +255,14 @@ class Powertrain:
         return self.n_motors * esc_input_power_W(p_m, self.esc_efficiency, self.esc_smoothing_W) + aux
 
     def analyze(self, torque_Nm, omega_radps, soc, aux_power_W=None) -> dict:
-        """Numeric node analysis: explicit motor/ESC, bracketed battery current (Eq. N1)."""
+        """Numeric node analysis: explicit motor/ESC, bracketed battery current (Eq. N1).
+        Returns the ``NODE_OUTPUTS`` and ``battery_current_A`` as 1-D arrays."""
         tq, om, s = np.broadcast_arrays(*(np.atleast_1d(np.asarray(x, float)) for x in (torque_Nm, omega_radps, soc)))
         p_bus = self.bus_power_W(tq, om, aux_power_W)
         ib = self.pack.current_for_power(p_bus, s)
-        return self.evaluate(tq, om, s, ib, aux_power_W)
+        out = self.evaluate(tq, om, s, ib, aux_power_W)
+        out["battery_current_A"] = np.atleast_1d(ib)
+        return out
 
     def balance(self, throttle, rotor_torque, soc=1.0, aux_power_W=None, method: str = "bracket",
                 omega0=None, current0=None, tol=1e-12) -> dict:
