@@ -196,7 +196,7 @@ def _broadcast_columns(args, kind):
 @lru_cache(maxsize=None)
 def _load(key: str) -> Airfoil:
     entry = CATALOG[key]
-    polars = [read_polar(p) for p in entry.polar_paths()]
+    polars = sorted((read_polar(p) for p in entry.polar_paths()), key=lambda p: p.reynolds)
     tc, _, camber = thickness_camber(entry.coordinate_path)
     tables = fit_tables(key, polars, FitSettings())
     return Airfoil(key, entry.title, tables, tc, camber, polars)

@@ -57,7 +57,7 @@ __all__ = ["ModelSettings", "SplineSet", "evaluate", "post_stall_maxima"]
 class ModelSettings:
     blend_width_deg: float = 1.5        # b: width of the attached/post-stall sigmoid
     blend_offset_deg: float = 3.0       # o: sigmoid centre past the last data point
-    anchor_decay_deg: float = 12.0      # L: relaxation of the stall-edge anchor
+    anchor_decay_deg: float = 8.0       # L: relaxation of the stall-edge anchor
     alpha_clip_width_deg: float = 0.5   # softplus corner of the alpha clip of the fit
     re_margin: float = 0.3              # data range in ln Re widened by this before limiting
     re_width: float = 0.1               # softplus corner width in ln Re
