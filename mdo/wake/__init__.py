@@ -12,7 +12,7 @@ mean_wake_velocity, influence      the averaged wake from the shipped table (mea
 from .biot_savart import filament_kernel, filament_velocity, ring_kernel, ring_velocity
 from .frames import rotor_frame, spin_for
 from .helical import full_wake_function, full_wake_velocity, wake_segments_function
-from .mean import influence, influence_function, jump_matrix, mean_wake_velocity, unit_cylinder
+from .mean import apply_influence, influence, influence_function, jump_matrix, mean_wake_velocity, unit_cylinder
 from .rotor import DEFAULT_CORE_REL, WakeRotor, element_edges
 
 __all__ = [
@@ -20,7 +20,7 @@ __all__ = [
     "rotor_frame", "spin_for",
     "filament_kernel", "filament_velocity", "ring_kernel", "ring_velocity",
     "full_wake_function", "full_wake_velocity", "wake_segments_function",
-    "influence", "influence_function", "jump_matrix", "mean_wake_velocity", "unit_cylinder",
+    "apply_influence", "influence", "influence_function", "jump_matrix", "mean_wake_velocity", "unit_cylinder",
 ]
 from .coupling import apply_influences, external_velocity, wake_convection_speed, wake_influences
 

@@ -16,10 +16,11 @@ list of :class:`WakeRotor` (placement, axis, sense, radius; may hold MX), and pe
 rotor its blade circulation ``gamma`` (N×K, one column per operating point), rotor
 speed and wake convection speed (K,).  Returns three M×K matrices.
 
-With ``model="mean"`` (default) the blade-passage-averaged wake is evaluated as
-``C1(geometry)·(Γ Ω/V_w) + C2(geometry)·Γ``: the B-spline table is evaluated once
-per design (M·(N+1) look-ups per rotor), and each operating point costs two
-matrix products — the form for the mission NLP.  ``model="full"`` evaluates the
+With ``model="mean"`` (default) the blade-passage-averaged wake is evaluated in
+factored form, M×N influence matrices (axial, radial, swirl) of the geometry times
+Γ Ω/V_w or Γ: the B-spline table is evaluated once per design (M·(N+1) look-ups per
+rotor), and each operating point costs three matrix–vector products — the form for
+the mission NLP.  ``model="full"`` evaluates the
 helical fixed wake (Biot–Savart over every filament) at every operating point:
 the paper's model, for analysis and checks.
 """
@@ -30,7 +31,7 @@ import numpy as np
 
 from ..core.errors import InputError
 from .helical import DEFAULT_ROTATIONS, DEFAULT_STEPS_PER_ROTATION, full_wake_velocity
-from .mean import influence
+from .mean import apply_influence, influence
 
 __all__ = ["wake_influences", "external_velocity", "apply_influences", "wake_convection_speed"]
 
@@ -42,7 +43,8 @@ def wake_convection_speed(v_axial_mps, va_mean_mps):
 
 
 def wake_influences(points, rotors):
-    """Per rotor, the averaged wake's (C1, C2) at ``points`` (3×M): see mean.influence."""
+    """Per rotor, the averaged wake's factored influence at ``points`` (3×M): see
+    mean.influence_function.  Evaluate once per design; reuse for every node."""
     return [influence(points, r) for r in rotors]
 
 
@@ -78,14 +80,16 @@ def _as_row(v, k, name):
 
 
 def apply_influences(influences, gamma, omega_radps, v_wake_mps):
-    """Σ_r C1_r (Γ_r Ω_r/V_w,r) + C2_r Γ_r as a 3M×K matrix (rows point-major)."""
-    total = 0
-    for (c1, c2), g, om, vw in zip(influences, gamma, omega_radps, v_wake_mps):
-        n = c1.shape[1]
+    """Σ over rotors of the averaged-wake velocity: (vx, vy, vz), each M×K, from the
+    per-rotor factored influences and per-rotor Γ (N×K), Ω and V_w (K values)."""
+    total = None
+    for infl, g, om, vw in zip(influences, gamma, omega_radps, v_wake_mps):
+        n = infl[0].shape[1]
         g = _as_nk(g, n, "gamma")
         k = g.shape[1]
         ratio = _as_row(om, k, "omega_radps") / _as_row(vw, k, "v_wake_mps")
-        total = total + ca.mtimes(c1, g * ca.repmat(ratio, n, 1)) + ca.mtimes(c2, g)
+        v = apply_influence(infl, g * ca.repmat(ratio, n, 1), g)
+        total = v if total is None else tuple(a + b for a, b in zip(total, v))
     return total
 
 
@@ -97,7 +101,7 @@ def external_velocity(points, rotors, gamma, omega_radps, v_wake_mps, *, model: 
     points: 3×M (numbers or MX).  rotors: list of WakeRotor.  gamma: per rotor N×K
     blade circulation (m²/s).  omega_radps, v_wake_mps: per rotor K values.
     model: "mean" (averaged wake, NLP form; ``influences`` may be passed to reuse
-    the per-design matrices) or "full" (helical fixed wake; ``phases`` snapshots
+    the per-design factors of :func:`wake_influences`) or "full" (helical fixed wake; ``phases`` snapshots
     averaged, each ``n_rotations`` × ``steps_per_rotation`` rings per blade and
     element, blade 0 at ``phase_rad``).
     Returns (vx, vy, vz), each M×K (NumPy for numeric input, MX otherwise).
@@ -108,7 +112,10 @@ def external_velocity(points, rotors, gamma, omega_radps, v_wake_mps, *, model: 
     m = pts.shape[1]
     if model == "mean":
         infl = influences if influences is not None else wake_influences(pts, rotors)
-        u = apply_influences(infl, gamma, omega_radps, v_wake_mps)
+        vx, vy, vz = apply_influences(infl, gamma, omega_radps, v_wake_mps)
+        if isinstance(vx, ca.DM):
+            return np.array(vx), np.array(vy), np.array(vz)
+        return vx, vy, vz
     elif model == "full":
         cols = None
         for r, g, om, vw in zip(rotors, gamma, omega_radps, v_wake_mps):

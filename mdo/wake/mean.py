@@ -38,9 +38,10 @@ What the NLP evaluates
 The table depends only on geometry (field points relative to the rotor, R, the
 edges), so for a mission it is evaluated once per design:
 
-    u(points) = C1 · (Γ / p) + C2 · Γ         (3M × N matrices, per rotor)
+    u_p = e_a·[Ax (Γ/p)]_p + rvec_p·[Ar (Γ/p)]_p + tdir_p·[At Γ]_p   (Ax, Ar, At: M × N)
 
-and at every node only the two matrix–vector products remain (:func:`influence`).
+and at every node only three matrix–vector products remain (:func:`influence_function`,
+:func:`apply_influence`).
 The semi-infinite wake stands for the paper's "few rotations"; at the GA-2P cruise
 (J = 1, five rotations ≈ 11 R) the truncated end changes the velocity at the wing by
 well under 1 % (bench).  Smoothness: the table is C² (cubic), even in ρ (mirrored
@@ -60,7 +61,7 @@ import numpy as np
 from ..core.errors import InputError
 from .frames import rotor_frame
 
-__all__ = ["unit_cylinder", "influence_function", "influence", "mean_wake_velocity",
+__all__ = ["unit_cylinder", "influence_function", "influence", "apply_influence", "mean_wake_velocity",
            "jump_matrix", "TABLE_CORE_REL"]
 
 _DATA = Path(__file__).with_name("data")
@@ -114,13 +115,16 @@ def jump_matrix(n_stations: int) -> np.ndarray:
 @functools.lru_cache(maxsize=None)
 def influence_function(n_points: int, n_stations: int, blades: int, core_rel: float = TABLE_CORE_REL) -> ca.Function:
     """Function ``mean_wake_influence(points, center, axis, radius_m, s_edges, spin)
-    -> (C1, C2)``: 3M×N matrices (rows point-major: x, y, z of point 0, then point 1 ...)
-    such that the blade-passage-averaged induced velocity is
+    -> (Ax, Ar, At, e_a, rvec, tdir)``: the averaged wake in factored form,
 
-        u = C1·(Γ/p) + C2·Γ,   p = V_w/Ω (m/rad),
+        u_p = e_a · [Ax (Γ/p)]_p + rvec_p · [Ar (Γ/p)]_p + tdir_p · [At Γ]_p,
 
-    for blade circulations Γ (N,) on the elements bounded by ``s_edges`` (N+1, r/R).
-    Depends on geometry only."""
+    for blade circulations Γ (N,) on the elements bounded by ``s_edges`` (N+1, r/R),
+    p = V_w/Ω (m/rad).  Ax, Ar, At: M×N (the edge jumps folded in: ΔΓ = D Γ);
+    e_a: 3×1 unit wake axis; rvec: 3×M radial offsets of the points from the axis;
+    tdir: 3×M swirl directions e_a × rvec/(ρ² + ε²) (|tdir| ≈ 1/ρ).  Depends on
+    geometry only; nothing 3M×N is formed (the NLP multiplies M×N by N×K).
+    """
     m, n, e = n_points, n_stations, n_stations + 1
     pts = ca.MX.sym("points", 3, m)
     center = ca.MX.sym("center", 3)
@@ -133,8 +137,8 @@ def influence_function(n_points: int, n_stations: int, blades: int, core_rel: fl
     x = ca.mtimes(e_a.T, d)                                   # 1×M
     rvec = d - ca.mtimes(e_a, x)                              # 3×M
     eps = _AXIS_REG * radius
-    rho2 = ca.sum1(rvec**2) + eps**2                          # 1×M
-    rho = ca.sqrt(rho2)
+    rho_t2 = ca.sum1(rvec**2)                                 # 1×M, true ρ²
+    rho = ca.sqrt(rho_t2 + eps**2)
     r_e = radius * s_edges                                    # E×1
     inv_re = 1.0 / r_e
     xi = ca.mtimes(inv_re, x)                                 # E×M
@@ -144,24 +148,35 @@ def influence_function(n_points: int, n_stations: int, blades: int, core_rel: fl
     kx = ca.reshape(kx, e, m)
     g = ca.reshape(g, e, m) * ca.repmat(inv_re, 1, m)          # u_ρ vector = g·ρvec/r_e
     # swirl: H_e(ρ) with the core of edge e, written in ρ² so that it is smooth on the axis
-    dr2 = ca.repmat(rho2, e, 1) - ca.repmat(r_e**2, 1, m)
+    dr2 = ca.repmat(rho_t2, e, 1) - ca.repmat(r_e**2, 1, m)
     w2 = ca.repmat((2 * core_rel * r_e**2) ** 2, 1, m)
     h = 0.5 * (1 + dr2 / ca.sqrt(dr2**2 + w2))                 # E×M
-    dx = core_rel * radius
-    s_x = 0.5 * (1 + x / ca.sqrt(x**2 + dx**2))                # 1×M
+    s_x = 0.5 * (1 + x / ca.sqrt(x**2 + (core_rel * radius) ** 2))  # 1×M, swirl step across the disk
     eps_h = core_rel * radius * s_edges[0]
-    swirl_dir = ca.cross(ca.repmat(e_a, 1, m), rvec) / ca.repmat(rho2 - eps**2 + eps_h**2, 3, 1)  # 3×M, |.| ≈ 1/ρ
+    tdir = ca.cross(ca.repmat(e_a, 1, m), rvec) / ca.repmat(rho_t2 + eps_h**2, 3, 1)  # 3×M
     k = blades / (2 * math.pi)
-    # per edge columns, point-major rows: element (3p + c, j)
-    c1_e = -k * (ca.kron(kx.T, ca.DM.ones(3, 1)) * ca.repmat(ca.reshape(ca.repmat(e_a, 1, m), 3 * m, 1), 1, e)
-                 + ca.kron(g.T, ca.DM.ones(3, 1)) * ca.repmat(ca.reshape(rvec, 3 * m, 1), 1, e))
-    c2_e = (spin * k) * ca.kron(h.T * ca.repmat(s_x.T, 1, e), ca.DM.ones(3, 1)) \
-        * ca.repmat(ca.reshape(swirl_dir, 3 * m, 1), 1, e)
-    dmat = ca.DM(jump_matrix(n))
-    c1 = ca.mtimes(c1_e, dmat)
-    c2 = ca.mtimes(c2_e, dmat)
-    return ca.Function("mean_wake_influence", [pts, center, axis, radius, s_edges, spin], [c1, c2],
-                       ["points", "center", "axis", "radius_m", "s_edges", "spin"], ["C1", "C2"])
+    dmat = ca.DM(jump_matrix(n))                               # E×N
+    ax = -k * ca.mtimes(kx.T, dmat)                            # M×N
+    ar = -k * ca.mtimes(g.T, dmat)
+    at = (spin * k) * ca.mtimes(h.T * ca.repmat(s_x.T, 1, e), dmat)
+    return ca.Function("mean_wake_influence", [pts, center, axis, radius, s_edges, spin],
+                       [ax, ar, at, e_a, rvec, tdir],
+                       ["points", "center", "axis", "radius_m", "s_edges", "spin"],
+                       ["Ax", "Ar", "At", "e_a", "rvec", "tdir"])
+
+
+def apply_influence(infl, gamma_over_p, gamma):
+    """Velocity components (vx, vy, vz), each M×K, from the factored influence ``infl``
+    (the 6 outputs of :func:`influence_function`) and per-node Γ/p and Γ (N×K)."""
+    ax, ar, at, e_a, rvec, tdir = infl
+    ua = ca.mtimes(ax, gamma_over_p)                           # M×K
+    ur = ca.mtimes(ar, gamma_over_p)
+    ut = ca.mtimes(at, gamma)
+    k = ua.shape[1]
+    out = []
+    for c in range(3):
+        out.append(e_a[c] * ua + ca.repmat(rvec[c, :].T, 1, k) * ur + ca.repmat(tdir[c, :].T, 1, k) * ut)
+    return tuple(out)
 
 
 def _col(x):
@@ -177,7 +192,7 @@ def _pts(points):
 
 
 def influence(points, rotor):
-    """(C1, C2) of :func:`influence_function` for a :class:`WakeRotor` at ``points`` (3×M)."""
+    """Factored influence (:func:`influence_function`) of a :class:`WakeRotor` at ``points`` (3×M)."""
     pts = _pts(points)
     f = influence_function(pts.shape[1], rotor.n_stations, rotor.blades, rotor.core_rel)
     return f(pts, _col(rotor.center), _col(rotor.axis), rotor.radius_m,
@@ -191,10 +206,10 @@ def mean_wake_velocity(points, rotor, gamma, omega_radps, v_wake_mps):
     array out; MX in → MX out.
     """
     pts = _pts(points)
-    c1, c2 = influence(pts, rotor)
+    infl = influence(pts, rotor)
     g = _col(gamma)
-    u = ca.mtimes(c1, g * (omega_radps / v_wake_mps)) + ca.mtimes(c2, g)
-    u = ca.reshape(u, 3, pts.shape[1])
+    vx, vy, vz = apply_influence(infl, g * (omega_radps / v_wake_mps), g)
+    u = ca.horzcat(vx, vy, vz).T
     if isinstance(u, ca.DM):
         return np.array(u)
     return u
