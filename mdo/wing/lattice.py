@@ -6,8 +6,9 @@ of its original (right, or only) half in vehicle body axes:
 * ``nodes[r]`` (3 x E), r = 0..nc-1: the bound-vortex points of chordwise row r
   on each spanwise strip edge, at x/c = (r + 1/4)/nc on the camber line;
   ``nodes[nc]``: the trailing-edge points (where the trailing legs leave along +x);
-* ``cp`` (3 x S*nc): control points, x/c = (r + 3/4)/nc at mid-strip, and
-  ``tangent``: the chordwise camber-line tangent there (for the normals);
+* ``cp`` (3 x S*nc): control points, x/c = (r + 3/4)/nc at mid-strip on the
+  straight legs between the lattice nodes, and ``tangent``: the chordwise
+  camber-line tangent at x/c = (r + 3/4)/nc (for the normals);
 * edge data: chord, eta and leading-edge points.
 
 Panels are numbered strip-major: panel j = s*nc + r (strip s from the root out,
@@ -82,12 +83,10 @@ def surface_half(s: Surface, p: Params) -> dict:
     xi_c = (np.arange(nc) + 0.75) / nc
     cambers = [camber_line(sec.airfoil if sec.airfoil is not None else s.airfoil) for sec in s.sections]
     zb_k = np.array([[cl.z(x) for x in xi_b] for cl in cambers])        # K x nc
-    zc_k = np.array([[cl.z(x) for x in xi_c] for cl in cambers])
     sc_k = np.array([[cl.slope(x) for x in xi_c] for cl in cambers])
 
     # edge quantities
     pts = {r: [] for r in range(nc + 1)}
-    cpts = {r: [] for r in range(nc)}
     tans = {r: [] for r in range(nc)}
     le, chord_e = [], []
     for e in edges:
@@ -104,10 +103,8 @@ def surface_half(s: Surface, p: Params) -> dict:
         u = ca.vertcat(ca.sin(th), 0, ca.cos(th))
         for r in range(nc):
             zb = mix(zb_k[:, r])
-            zc = mix(zc_k[:, r])
             sc = mix(sc_k[:, r])
             pts[r].append(q + (xi_b[r] - 0.25) * c * t + c * zb * u)
-            cpts[r].append(q + (xi_c[r] - 0.25) * c * t + c * zc * u)
             tans[r].append(t + sc * u)
         pts[nc].append(q + 0.75 * c * t)
         le.append(q - 0.25 * c * t)
@@ -123,10 +120,17 @@ def surface_half(s: Surface, p: Params) -> dict:
         return o + pv + ca.mtimes(R, ca.mtimes(V, P) - pv)   # rotate about the pivot
 
     nodes = [to_global(pts[r]) for r in range(nc + 1)]
+    # control points on the lattice itself: on the straight chordwise legs between the
+    # row's bound point and the next node (half way; 2/3 of the way to the trailing edge
+    # on the last row), so that camber never lifts a control point off the legs of a
+    # narrow strip (the camber enters through the normals' slope, as in thin-airfoil theory)
+    frac = [0.5] * (nc - 1) + [2.0 / 3.0]
     cp_cols, tan_cols = [], []
     for si in range(S):
         for r in range(nc):
-            cp_cols.append(0.5 * (cpts[r][si] + cpts[r][si + 1]))
+            a = 0.5 * (pts[r][si] + pts[r][si + 1])
+            b = 0.5 * (pts[r + 1][si] + pts[r + 1][si + 1])
+            cp_cols.append(a + frac[r] * (b - a))
             tan_cols.append(0.5 * (tans[r][si] + tans[r][si + 1]))
     cp = to_global(cp_cols)
     tangent = ca.mtimes(RV, ca.horzcat(*tan_cols))
