@@ -8,7 +8,7 @@ import numpy as np
 
 from ..core.errors import InputError, check_positive, check_range
 from .catalog import CATALOG, normalize
-from .data_io import read_polar, thickness_camber
+from .data_io import camber_line, read_polar, thickness_camber
 from .fit import FitSettings, SurrogateTables, fit_tables
 from .model import ModelSettings, evaluate, post_stall_maxima
 
@@ -19,7 +19,7 @@ REFERENCE_REYNOLDS = 1.0e6
 
 def available() -> list[str]:
     """Names accepted by :meth:`Airfoil.from_name` (airfoils whose polars are shipped)."""
-    return sorted(k for k, e in CATALOG.items() if e.polar_paths())
+    return sorted(k for k, e in CATALOG.items() if e.shipped)
 
 
 class Airfoil:
@@ -60,7 +60,7 @@ class Airfoil:
         """The shipped airfoil ``name`` (case, spaces, '-' and '_' ignored); see :func:`available`."""
         key = normalize(name)
         entry = CATALOG.get(key)
-        if entry is None or not entry.polar_paths():
+        if entry is None or not entry.shipped:
             raise InputError("airfoil", f"unknown airfoil {name!r}; available: {', '.join(available())}")
         return _load(key)
 
@@ -138,6 +138,10 @@ class Airfoil:
     def lift_slope_per_rad(self) -> float:
         """Linear-range lift slope [1/rad] at Re = 1e6, M = 0."""
         return self.lift_slope()
+
+    def camber_line(self, x_over_c):
+        """``(z/c, dz/dx)`` of the mean line at chord stations ``x/c`` (from the coordinates)."""
+        return camber_line(CATALOG[self.key].coordinate_path, x_over_c)
 
     def best_lift_to_drag(self, reynolds: float = REFERENCE_REYNOLDS, mach: float = 0.0):
         """``(alpha_rad, cl, cd)`` at the maximum of cl/cd (a design point for Adkins-Liebeck)."""

@@ -26,6 +26,11 @@ class AirfoilEntry:
     def coordinate_path(self):
         return DATA_DIR / "coordinates" / self.coordinates
 
+    @property
+    def shipped(self) -> bool:
+        """Coordinates and at least one polar present."""
+        return self.coordinate_path.exists() and bool(self.polar_paths())
+
     def polar_paths(self):
         return sorted((DATA_DIR / "polars").glob(f"{self.polar_prefix}_polar_Re_*.txt"))
 

@@ -22,7 +22,7 @@ from ..core.errors import InputError
 
 DATA_DIR = Path(__file__).resolve().parent / "data"
 
-__all__ = ["DATA_DIR", "Polar", "read_polar", "read_coordinates", "thickness_camber"]
+__all__ = ["DATA_DIR", "Polar", "read_polar", "read_coordinates", "thickness_camber", "camber_line"]
 
 
 @dataclass(frozen=True)
@@ -117,3 +117,23 @@ def thickness_camber(path, n: int = 400):
     chord = x1 - x0
     camber = 0.5 * (yu + yl)
     return float(t[i] / chord), float((x[i] - x0) / chord), float(camber.max() / chord)
+
+
+def camber_line(path, x_over_c):
+    """Mean line ``z/c`` and its slope ``dz/dx`` at stations ``x/c`` (chord from the
+    coordinate file's leading to trailing edge); slope by central differences of a
+    0.1 %-chord step, ends one-sided."""
+    _, upper, lower = read_coordinates(path)
+    x0 = min(upper[:, 0].min(), lower[:, 0].min())
+    x1 = max(upper[:, 0].max(), lower[:, 0].max())
+    c = x1 - x0
+
+    def z(xc):
+        x = x0 + c * np.clip(xc, 0.0, 1.0)
+        return 0.5 * (np.interp(x, upper[:, 0], upper[:, 1]) + np.interp(x, lower[:, 0], lower[:, 1])) / c
+
+    xc = np.asarray(x_over_c, dtype=float)
+    h = 1e-3
+    lo = np.clip(xc - h, 0.0, 1.0)
+    hi = np.clip(xc + h, 0.0, 1.0)
+    return z(xc), (z(hi) - z(lo)) / (hi - lo)

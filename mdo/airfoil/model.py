@@ -161,7 +161,9 @@ def evaluate(tab: SurrogateTables, thickness_to_chord: float, alpha, reynolds, m
     deg = np.pi / 180.0
     spl = splines_of(tab)
     # --- 1. Reynolds number: ln Re limited to the data range +- re_margin
-    r = lib.log(reynolds)
+    # ln Re, written ln sqrt(Re^2 + 1) so that an NLP iterate with Re <= 0 stays finite
+    # (relative change < 1e-10 for Re > 1e4)
+    r = 0.5 * lib.log(reynolds * reynolds + 1.0)
     r_lo = tab.log_re[0] - s.re_margin
     r_hi = tab.log_re[-1] + s.re_margin
     sp_hi = softplus(r - r_hi, s.re_width)

@@ -83,3 +83,46 @@ def plot_airfoil(airfoil, path, mach: float = 0.0):
     fig.savefig(path, dpi=110)
     plt.close(fig)
     return path
+
+
+def jump_mask(polar, cl_step: float = 0.06, lncd_step: float = 0.15, within_deg: float = 1.0):
+    """Points within ``within_deg`` of an XFOIL discontinuity: two neighbouring points
+    whose cl differs by more than ``cl_step`` or ln cd by more than ``lncd_step``."""
+    jump = np.zeros(len(polar.cl), bool)
+    step = (np.abs(np.diff(polar.cl)) > cl_step) | (np.abs(np.diff(np.log(polar.cd))) > lncd_step)
+    jump[:-1] |= step
+    jump[1:] |= step
+    return np.array([np.any(jump[np.abs(polar.alpha_deg - a) <= within_deg]) for a in polar.alpha_deg])
+
+
+def summary_markdown(names) -> str:
+    """One row per airfoil: points, share within tolerance, worst/RMS errors, misses away from jumps."""
+    from . import Airfoil
+
+    rows = ["| airfoil | Re levels | points | within 0.03 cl | within 5 % cd | rms dcl | rms dcd/cd "
+            "| max dcl | max dcd/cd | misses >1 deg from an XFOIL jump (cl / cd) |",
+            "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
+    for name in names:
+        af = Airfoil.from_name(name)
+        n = ok_cl = ok_cd = far = far_cl = far_cd = 0
+        s_cl = s_cd = 0.0
+        m_cl = m_cd = 0.0
+        for p in af.polars:
+            cl, cd, _ = af.coefficients(np.radians(p.alpha_deg), p.reynolds, 0.0)
+            dcl = np.abs(cl - p.cl)
+            rcd = np.abs(cd / p.cd - 1.0)
+            near = jump_mask(p)
+            n += len(dcl)
+            ok_cl += int(np.sum(dcl <= CL_TOL))
+            ok_cd += int(np.sum(rcd <= CD_TOL))
+            s_cl += float(np.sum(dcl ** 2))
+            s_cd += float(np.sum(rcd ** 2))
+            m_cl = max(m_cl, float(dcl.max()))
+            m_cd = max(m_cd, float(rcd.max()))
+            far += int(np.sum(~near))
+            far_cl += int(np.sum((dcl > CL_TOL) & ~near))
+            far_cd += int(np.sum((rcd > CD_TOL) & ~near))
+        rows.append(f"| {af.title} | {len(af.polars)} | {n} | {100 * ok_cl / n:.1f} % | {100 * ok_cd / n:.1f} % "
+                    f"| {np.sqrt(s_cl / n):.4f} | {np.sqrt(s_cd / n):.3f} | {m_cl:.2f} | {m_cd:.2f} "
+                    f"| {far_cl} / {far_cd} of {far} |")
+    return "\n".join(rows)

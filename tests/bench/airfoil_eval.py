@@ -130,7 +130,7 @@ def main():
     aa, rr = ca.SX.sym("aa"), ca.SX.sym("rr")
     f_shipped = ca.Function("att_shipped", [aa, rr], [surf(ca.vertcat(aa, rr))])
     f_int, grid = attached_interpolant(af, f_shipped)
-    ra = np.log(re_)
+    ra = np.clip(np.log(re_), af.tables.log_re[0], af.tables.log_re[-1])  # inside (c)'s grid
     for label, fk in (("(a) Function.bspline call node", f_shipped), ("(b) truncated-power SX", f_sx),
                       (f"(c) bspline interpolant {grid[0]}x{grid[1]}", f_int)):
         aa, rr = ca.SX.sym("aa"), ca.SX.sym("rr")

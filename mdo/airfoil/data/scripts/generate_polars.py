@@ -137,30 +137,36 @@ def run_xfoil(shim: Path, workdir: Path, geometry, reynolds: float, tag: str) ->
 
     XFOIL without FP traps occasionally loops forever on a diverged boundary layer;
     a session that adds no converged point for 20 s is killed and the sweep
-    resumes, from a fresh boundary layer, 1 deg past the last converged angle (at
-    most 6 restarts).
+    resumes 1 deg past the last converged angle, after re-converging the boundary
+    layer on a short ramp up to that angle (at most 6 restarts).
     """
     outs = []
     step = ALPHA_STEP_DEG
     for direction, alphas in (("pos", np.arange(0.0, 25.001, step)),
                               ("neg", np.arange(-step, -25.001, -step))):
         i, restarts, part = 0, 0, 0
-        header_file = None
+        ramp = np.array([])
         while i < len(alphas) and restarts <= 6:
             pacc = workdir / f"{tag}_{direction}_{part}.txt"
             if pacc.exists():
                 pacc.unlink()
-            finished = _xfoil_session(shim, workdir, geometry, reynolds, alphas[i:], pacc,
-                                      timeout_s=20.0)
+            finished = _xfoil_session(shim, workdir, geometry, reynolds,
+                                      np.concatenate([ramp, alphas[i:]]), pacc, timeout_s=20.0)
             outs.append(pacc)
             part += 1
             if finished:
                 break
             restarts += 1
-            done = _converged(pacc)
+            done = {}
+            for f in outs:
+                if f.name.startswith(f"{tag}_{direction}_"):
+                    done.update(_converged(f))
             if done:
                 last = max(done, key=abs)
                 i = max(i + 1, int(np.argmin(np.abs(alphas - last))) + 4)
+                # restart from a converged boundary layer: walk up to the last
+                # converged angle from 2 deg below it, then skip the hung angle
+                ramp = np.linspace(last - 2.0 * np.sign(last or 1.0), last, 5)
             else:
                 i += 4
     return outs
