@@ -1,1 +1,20 @@
-"""Lifting surfaces: geometry, vortex lattice, drag build-up."""
+"""Lifting surfaces: segmented-wing geometry symbolic in the design, a multi-surface vortex
+lattice solved for K operating points at once, and the drag build-up.
+
+    >>> from mdo.wing import VLM, trapezoid
+    >>> v = VLM([trapezoid("wing", 11.4, 1.5, 0.7, nspan=20)])
+    >>> r = v.solve(alpha=0.05, V=60.0)          # r["CL"], r["CDi"], r["cl"], ...
+
+See ``mdo/wing/README.md`` for the model, its conventions and its measured accuracy.
+"""
+from .camber import camber_line, known_camber_names
+from .drag import Body, body_drag, profile_drag, section_cd, skin_friction
+from .geometry import (Params, Section, Surface, aspect_ratio, constant_area, mean_aerodynamic_chord,
+                       planform_area, trapezoid)
+from .vlm import VLM
+
+__all__ = [
+    "VLM", "Surface", "Section", "trapezoid", "constant_area", "planform_area",
+    "mean_aerodynamic_chord", "aspect_ratio", "Params", "camber_line", "known_camber_names",
+    "Body", "body_drag", "profile_drag", "section_cd", "skin_friction",
+]

@@ -7,7 +7,8 @@ Reynolds number ``Re = rho V_local c / mu``; its drag per unit span is
 ``q_local c cd(cl_local, Re)``.  The section law ``cd(cl, Re)`` is the inverse
 polar of the airfoil surrogate (:mod:`mdo.airfoil`, issue 3): for each of 17
 Reynolds numbers (1e4 .. 1e8, log-spaced) the surrogate is sampled over its
-attached branch (from the negative to the positive cl maximum, 0.05 deg steps),
+attached branch (from the negative to the positive cl maximum, 0.05 deg steps;
+where the polar dips below a level it already reached, the first crossing is kept),
 ``cd`` is tabulated against ``cl`` on a fixed grid and, beyond the attached range,
 continued by ``cd_end + s (cl - cl_end) + k (cl - cl_end)^2`` (slope s of the
 polar's end, k = 2: the stall drag rise a linear VLM cannot see); the table is
@@ -44,7 +45,8 @@ from dataclasses import dataclass
 import casadi as ca
 import numpy as np
 
-from ..core.errors import InputError, check_positive, check_range
+from ..core.errors import InputError
+from .geometry import check_positive, check_range
 from ..core.smooth import is_symbolic, smooth_min, xp
 
 __all__ = [
@@ -64,16 +66,26 @@ def _lib(*args):
 
 # --- section law cd(cl, Re) -------------------------------------------------------------------
 def _attached_branch(af, re):
-    a = np.radians(np.arange(-25.0, 30.0001, 0.05))
+    """(cl, cd) along alpha from the negative to the positive cl maximum, cl strictly increasing.
+
+    Where the polar has a plateau or dip below its maximum (laminar-bubble kinks at low
+    Re), each cl is taken at the smallest |alpha| that reaches it (the first crossing).
+    """
+    a = np.radians(np.arange(-20.0, 25.0001, 0.05))
     cl, cd, _ = af.coefficients(a, np.full_like(a, re), np.zeros_like(a))
     i0 = int(np.argmin(np.abs(a - af.zero_lift_angle(min(max(re, 2e4), 1e7)))))
-    hi = i0
-    while hi + 1 < len(a) and cl[hi + 1] > cl[hi]:
-        hi += 1
-    lo = i0
-    while lo - 1 >= 0 and cl[lo - 1] < cl[lo]:
-        lo -= 1
-    return cl[lo:hi + 1], cd[lo:hi + 1]
+    i_hi = i0 + int(np.argmax(cl[i0:]))
+    i_lo = int(np.argmin(cl[:i0 + 1]))
+    up = [i0]
+    for i in range(i0 + 1, i_hi + 1):
+        if cl[i] > cl[up[-1]]:
+            up.append(i)
+    down = [i0]
+    for i in range(i0 - 1, i_lo - 1, -1):
+        if cl[i] < cl[down[-1]]:
+            down.append(i)
+    idx = down[::-1] + up[1:]
+    return cl[idx], cd[idx]
 
 
 def _column(cl_b, cd_b):

@@ -52,7 +52,9 @@ from typing import Any, Sequence
 import casadi as ca
 import numpy as np
 
-from ..core.errors import InputError, check_positive, check_range
+from ..core.errors import InputError
+from ..core.errors import check_positive as _core_check_positive
+from ..core.errors import check_range as _core_check_range
 from ..core.smooth import is_symbolic
 from .camber import camber_line
 
@@ -62,6 +64,17 @@ __all__ = [
 ]
 
 SPACINGS = ("cosine", "uniform", "sine")
+
+
+# mdo.core's checks turn an SX scalar into NaN (np.asarray(SX) succeeds); skip expressions here
+def check_positive(field, value, unit=""):
+    if not isinstance(value, (ca.SX, ca.MX)):
+        _core_check_positive(field, value, unit)
+
+
+def check_range(field, value, lower=-np.inf, upper=np.inf, unit="", inclusive=True):
+    if not isinstance(value, (ca.SX, ca.MX)):
+        _core_check_range(field, value, lower, upper, unit, inclusive)
 
 
 @dataclass

@@ -586,7 +586,7 @@ class VLM:
         mach = _row(self.mach_ref if mach is None else mach)
         Kn = max(x.shape[1] for x in (alpha, beta, V, rho, mach))
         alpha, beta, V, rho, mach = (_bcast(x, Kn) for x in (alpha, beta, V, rho, mach))
-        if self.symmetric and not (is_symbolic(beta) or float(ca.mmax(ca.fabs(ca.DM(beta)))) == 0.0):
+        if self.symmetric and not isinstance(beta, (ca.MX, ca.SX)) and float(ca.mmax(ca.fabs(beta))) != 0.0:
             raise InputError("beta", "sideslip must be 0 in symmetric mode (use symmetric=False)")
         ca_, sa_ = ca.cos(alpha), ca.sin(alpha)
         cb_, sb_ = ca.cos(beta), ca.sin(beta)
