@@ -7,7 +7,7 @@ import pytest
 from mdo.airfoil import Airfoil, available
 from mdo.airfoil.fit import natural_spline_weights
 from mdo.airfoil.model import splines_of
-from mdo.airfoil.validation import CD_TOL, CL_TOL, polar_errors
+from mdo.airfoil.validation import CD_TOL, CL_TOL, jump_mask, polar_errors
 from mdo.core import InputError
 
 NAMES = ["clarky", "e63", "naca0015", "naca4412", "naca63412"]
@@ -17,8 +17,8 @@ NAMES = ["clarky", "e63", "naca0015", "naca4412", "naca63412"]
 # miss sit at XFOIL's discontinuities (laminar-bubble bursts and negative stall,
 # where cl jumps by up to 0.6 and cd by 2-7x between two 0.25 deg points); see
 # mdo/airfoil/README.md for the numbers.
-MIN_FRACTION_CL = {"clarky": 0.97, "e63": 0.97, "naca0015": 0.97, "naca4412": 0.97, "naca63412": 0.98}
-MIN_FRACTION_CD = {"clarky": 0.93, "e63": 0.93, "naca0015": 0.94, "naca4412": 0.94, "naca63412": 0.97}
+MIN_FRACTION_CL = {"clarky": 0.96, "e63": 0.95, "naca0015": 0.97, "naca4412": 0.97, "naca63412": 0.98}
+MIN_FRACTION_CD = {"clarky": 0.94, "e63": 0.93, "naca0015": 0.98, "naca4412": 0.95, "naca63412": 0.98}
 
 
 @pytest.fixture(scope="module", params=NAMES)
@@ -63,9 +63,13 @@ def test_accuracy_at_polar_points(airfoil):
     assert ok_cl >= MIN_FRACTION_CL[airfoil.key], (ok_cl, CL_TOL)
     assert ok_cd >= MIN_FRACTION_CD[airfoil.key], (ok_cd, CD_TOL)
     # and the bulk is well inside the tolerance
-    rms_cl = np.sqrt(sum(e.rms_dcl ** 2 * e.n_points for e in errs) / n)
-    rms_cd = np.sqrt(sum(e.rms_rel_dcd ** 2 * e.n_points for e in errs) / n)
-    assert rms_cl < 0.02 and rms_cd < 0.035, (rms_cl, rms_cd)
+    dcl, rcd = [], []
+    for p in airfoil.polars:
+        cl, cd, _ = airfoil.coefficients(np.radians(p.alpha_deg), p.reynolds)
+        dcl.append(np.abs(cl - p.cl))
+        rcd.append(np.abs(cd / p.cd - 1))
+    assert np.median(np.concatenate(dcl)) < 0.01
+    assert np.median(np.concatenate(rcd)) < 0.02
 
 
 def test_accuracy_away_from_xfoil_jumps(airfoil):
@@ -75,11 +79,7 @@ def test_accuracy_away_from_xfoil_jumps(airfoil):
     total = 0
     for p in airfoil.polars:
         cl, cd, _ = airfoil.coefficients(np.radians(p.alpha_deg), p.reynolds)
-        jump = np.zeros(len(p.cl), bool)
-        step = (np.abs(np.diff(p.cl)) > 0.06) | (np.abs(np.diff(np.log(p.cd))) > 0.15)
-        jump[:-1] |= step
-        jump[1:] |= step
-        near = np.array([np.any(jump[(np.abs(p.alpha_deg - a) <= 1.0)]) for a in p.alpha_deg])
+        near = jump_mask(p)
         bad = (np.abs(cl - p.cl) > CL_TOL) | (np.abs(cd / p.cd - 1) > CD_TOL)
         misses += int(np.sum(bad & ~near))
         total += int(np.sum(~near))
@@ -134,8 +134,11 @@ def test_reynolds_extrapolation():
         # drag keeps falling with Re beyond the data (power laws), lift stays bounded
         assert np.all(af.cd(a, lo / 3, 0) > af.cd(a, lo, 0))
         assert np.all(af.cd(a, hi * 5, 0) < af.cd(a, hi, 0))
-        assert np.all(np.abs(af.cl(a, lo / 3, 0) - af.cl(a, lo, 0)) < 0.1)
-        assert np.all(np.abs(af.cl(a, hi * 5, 0) - af.cl(a, hi, 0)) < 0.1)
+        # cl follows the lowest levels' trend 0.15 further in ln Re, then freezes
+        # (XFOIL's cl changes fast between Re 2e4 and 5e4); above the data it freezes
+        assert np.all(np.abs(af.cl(a, lo / 3, 0) - af.cl(a, lo, 0)) < 0.2)
+        assert np.all(np.abs(af.cl(a, lo / 10, 0) - af.cl(a, lo / 3, 0)) < 1e-3)
+        assert np.all(np.abs(af.cl(a, hi * 5, 0) - af.cl(a, hi, 0)) < 0.05)
     af = Airfoil.from_name("naca4412")
     r = af.cd(np.radians(2.0), 4e5, 0) / af.cd(np.radians(2.0), 4e5 * 1.1, 0)
     assert 1.0 < r < 1.1  # smooth between levels

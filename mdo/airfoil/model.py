@@ -59,8 +59,8 @@ class ModelSettings:
     blend_offset_deg: float = 3.0       # o: sigmoid centre past the last data point
     anchor_decay_deg: float = 8.0       # L: relaxation of the stall-edge anchor
     alpha_clip_width_deg: float = 0.5   # softplus corner of the alpha clip of the fit
-    re_margin: float = 0.3              # data range in ln Re widened by this before limiting
-    re_width: float = 0.1               # softplus corner width in ln Re
+    re_margin: float = 0.15             # data range in ln Re widened by this before limiting
+    re_width: float = 0.05              # softplus corner width in ln Re
     n_laminar: float = 0.5              # cd ~ Re^-n below the data
     n_turbulent: float = 0.16           # cd ~ Re^-n above the data
     mach_cap: float = 0.7               # Prandtl-Glauert Mach limit
