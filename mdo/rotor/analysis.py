@@ -62,7 +62,7 @@ def _element_residual(sec, tip_loss, hub_loss):
     return _CACHE[key][0]
 
 
-def solve_kernel(sec, *, n_grid: int = 24, n_bisect: int = 14, n_newton: int = 4,
+def solve_kernel(sec, *, n_grid: int = 16, n_bisect: int = 10, n_newton: int = 5,
                  tip_loss: bool = True, hub_loss: bool = True) -> ca.Function:
     """SX Function solving one element's residual on the interval (phi_a -> phi_b).
 
