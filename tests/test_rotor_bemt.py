@@ -196,3 +196,27 @@ def test_nlp_mode_reproduces_analysis():
     phi = np.asarray(sol.value(out["phi_rad"]))
     np.testing.assert_allclose(phi, ref["phi_rad"], atol=1e-7)
     np.testing.assert_allclose(np.asarray(sol.value(out["thrust_N"])).ravel(), ref["thrust_N"], rtol=1e-6)
+
+
+@pytest.mark.parametrize("wma_deg", [45.0, 15.0])
+def test_tilt_wing_transition_incidence_converges_in_azimuth(wma_deg):
+    """TTW-like rotor in transition (rotor axis at 45 and 15 deg to the flight path)."""
+    from mdo.rotor import inflow_components
+
+    sec = AnalyticSection(alpha0_rad=math.radians(-4), cd0=0.009, k_drag=0.007)
+    rotor = RotorGeometry(radius_m=1.2, blades=3, r_over_R=[0.12, 0.4, 0.7, 1.0],
+                          chord_over_R=[0.12, 0.16, 0.11, 0.06], beta_rad=np.radians([45.0, 25.0, 15.0, 11.0]),
+                          airfoil=sec)
+    V = 25.0 if wma_deg == 45.0 else 45.0
+    vx, vp = inflow_components(V, math.radians(90.0 - wma_deg))
+    T = {}
+    for m in (8, 16, 32):
+        res = analyze(rotor, omega_radps=140.0, v_axial_mps=vx, v_inplane_mps=vp, n_azimuth=m)
+        assert res.converged.all()
+        T[m] = (res["thrust_N"][0], res["hforce_N"][0], res["power_W"][0])
+    for k in range(3):
+        assert abs(T[8][k] / T[32][k] - 1) < 5e-3 and abs(T[16][k] / T[32][k] - 1) < 1e-3
+    assert T[32][1] > 0
+    axial = analyze(rotor, omega_radps=140.0, v_axial_mps=vx)
+    # in-plane flow raises the mean dynamic pressure: more thrust and power than the axial part alone
+    assert T[32][0] > axial["thrust_N"][0] and T[32][2] > axial["power_W"][0]

@@ -5,7 +5,7 @@ from .geometry import RotorGeometry, station_layout, read_geometry_csv, write_ge
 from .sections import AnalyticSection, section, available_sections
 from .bemt import (
     bemt_function, station_physics, phi_momentum_guess, bemt_unknowns, add_bemt_nodes,
-    azimuth_angles, INPUT_NAMES, NLP_OUTPUTS, FULL_OUTPUTS, PHI_MIN_RAD, PHI_MAX_RAD,
+    azimuth_angles, inflow_components, INPUT_NAMES, NLP_OUTPUTS, FULL_OUTPUTS, PHI_MIN_RAD, PHI_MAX_RAD,
 )
 from .analysis import analyze, analyze_inputs, sweep_J, solve_phi, RotorResult, analysis_function, operating_inputs
 from .design import (
@@ -17,7 +17,7 @@ __all__ = [
     "RotorGeometry", "station_layout", "read_geometry_csv", "write_geometry_csv",
     "AnalyticSection", "section", "available_sections",
     "bemt_function", "station_physics", "phi_momentum_guess", "bemt_unknowns", "add_bemt_nodes",
-    "azimuth_angles", "INPUT_NAMES", "NLP_OUTPUTS", "FULL_OUTPUTS", "PHI_MIN_RAD", "PHI_MAX_RAD",
+    "azimuth_angles", "inflow_components", "INPUT_NAMES", "NLP_OUTPUTS", "FULL_OUTPUTS", "PHI_MIN_RAD", "PHI_MAX_RAD",
     "analyze", "analyze_inputs", "sweep_J", "solve_phi", "RotorResult", "analysis_function", "operating_inputs",
     "adkins_liebeck", "adkins_liebeck_function", "adkins_liebeck_unrolled", "add_adkins_liebeck",
     "DESIGN_INPUTS", "design_guess",

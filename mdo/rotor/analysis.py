@@ -118,14 +118,15 @@ def solve_kernel(sec, *, n_grid: int = 16, n_bisect: int = 10, n_newton: int = 5
 
 def point_solver(sec, n_stations: int = 20, n_azimuth: int = 1, *, tip_loss=True, hub_loss=True,
                  **kernel_opts) -> ca.Function:
-    """SX Function: one operating point's inputs (``INPUT_NAMES`` without phi) ->
-    ``phi_rad`` [n*m], ``residual`` [n*m], ``found`` [n*m], searching (0, pi/2]."""
+    """Function: one operating point's inputs (``INPUT_NAMES`` without phi) ->
+    ``phi_rad`` [n*m], ``residual`` [n*m], ``found`` [n*m], searching (0, pi/2].
+    An MX wrapper around the SX element kernel mapped over the n*m elements."""
     key = _cache_key(sec, "point", n_stations, n_azimuth, tip_loss, hub_loss,
                      tuple(sorted(kernel_opts.items())))
     if key in _CACHE:
         return _CACHE[key][0]
     n, m = n_stations, n_azimuth
-    x = _symbols(n, m)
+    x = _symbols(n, m, ca.MX)   # MX: the element kernel stays one mapped call node (fast build)
     r, dr, e = _elements(x, n, m)
     kern = solve_kernel(sec, tip_loss=tip_loss, hub_loss=hub_loss, **kernel_opts)
     N = n * m
@@ -384,7 +385,7 @@ def analysis_function(sec, n_stations: int, n_points: int, n_azimuth: int = 1, *
     ps = point_solver(sec, n_stations, n_azimuth, tip_loss=tip_loss, hub_loss=hub_loss)
     full = bemt_function(sec, n_stations, n_azimuth, outputs="full", tip_loss=tip_loss,
                          hub_loss=hub_loss)
-    x = _symbols(n_stations, n_azimuth)
+    x = _symbols(n_stations, n_azimuth, ca.MX)
     names_in = [k for k in INPUT_NAMES if k != "phi_rad"]
     s = ps(**{k: x[k] for k in names_in})
     o = full(**{k: x[k] for k in names_in}, phi_rad=s["phi_rad"])

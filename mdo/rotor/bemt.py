@@ -81,6 +81,7 @@ __all__ = [
     "PHI_MIN_RAD",
     "PHI_MAX_RAD",
     "azimuth_angles",
+    "inflow_components",
     "phi_momentum_guess",
     "bemt_unknowns",
     "add_bemt_nodes",
@@ -110,6 +111,21 @@ FULL_OUTPUTS = NLP_OUTPUTS + (
 def azimuth_angles(n_azimuth: int) -> np.ndarray:
     """Blade positions psi_j = 2 pi (j + 1/2)/n [rad] (0 = downstream of the in-plane flow)."""
     return 2.0 * np.pi * (np.arange(n_azimuth) + 0.5) / n_azimuth
+
+
+def inflow_components(speed_mps, incidence_rad):
+    """Freestream in the rotor frame: ``(v_axial, v_inplane) = (V cos i, V sin i)``.
+
+    ``incidence_rad`` is the angle between the freestream velocity and the thrust
+    axis (0: axial flow into the disk, pi/2: edgewise).  For a tilt-wing rotor with
+    wing-mounted angle WMA and body angle of attack alpha in level flight,
+    ``i = WMA + alpha`` measured from the flight direction.  A negative in-plane
+    value means flow along ``-e_p``; H then changes sign with it.  Works on numbers
+    and CasADi expressions.
+    """
+    lib = ca if isinstance(speed_mps, (ca.SX, ca.MX, ca.DM)) or isinstance(incidence_rad, (ca.SX, ca.MX, ca.DM)) \
+        else np
+    return speed_mps * lib.cos(incidence_rad), speed_mps * lib.sin(incidence_rad)
 
 
 def station_physics(phi, r, chord, theta, vx, vy, rho, mu, a_sound, blades, r_tip, r_hub, sec,
@@ -154,8 +170,8 @@ def station_physics(phi, r, chord, theta, vx, vy, rho, mu, a_sound, blades, r_ti
     }
 
 
-def _symbols(n: int, n_azimuth: int) -> dict:
-    sym = ca.SX.sym
+def _symbols(n: int, n_azimuth: int, kind=ca.SX) -> dict:
+    sym = kind.sym
     return {
         "radius_m": sym("radius_m"),
         "hub_fraction": sym("hub_fraction"),

@@ -20,7 +20,7 @@ import time
 import numpy as np
 
 from mdo.rotor import RotorGeometry, analysis_function, section, sweep_J
-from mdo.rotor.analysis import _broadcast_inputs, operating_inputs, point_solver
+from mdo.rotor.analysis import _broadcast_inputs, operating_inputs, solve_kernel
 from mdo.rotor.geometry import DATA_DIR
 
 
@@ -64,10 +64,10 @@ def main(argv=None):
     sweep_J(rotor, J, rpm=rpm, n_stations=n)     # warm the caches
     t_sweep, t_sweep_min = median_time(lambda: sweep_J(rotor, J, rpm=rpm, n_stations=n), a.repeats)
     res = sweep_J(rotor, J, rpm=rpm, n_stations=n)
-    ps = point_solver(sec, n)
+    kern = solve_kernel(sec)
     print(f"rotor sweep benchmark: {n} stations x {K} J points (APC 10x7, sections {a.airfoil})")
     print(f"  section load/fit            {t_sec * 1e3:8.1f} ms")
-    print(f"  build mapped analysis fn    {t_build * 1e3:8.1f} ms  (point solver {ps.n_instructions()} instructions; "
+    print(f"  build mapped analysis fn    {t_build * 1e3:8.1f} ms  (element solve kernel {kern.n_instructions()} SX instructions; "
           f"first call {t_first * 1e3:.1f} ms)")
     print(f"  mapped call (one sweep)     {t_map * 1e3:8.2f} ms median ({t_map_min * 1e3:.2f} min) "
           f"= {t_map / K * 1e3:.3f} ms per point, {t_map / (K * n) * 1e6:.1f} us per station")
