@@ -103,7 +103,7 @@ def write_outputs(out_dir: Path = OUT_DIR, cl_values=(0.5, 0.7, 0.9)) -> list:
                   "A-L's chord is large).  For GA-8P (sections at Re 1.3-1.6e5) IPOPT stops in different local "
                   "optima from different starts (some stations jump to cl ~1.4 or to zero lift, exploiting "
                   "low-Reynolds features of the NACA 4412 polar), one of them slightly worse than its start; the "
-                  "best of the three is 0.3 % below A-L at cl 0.5-0.9.",
+                  "best of the three is 0.2-0.8 % below A-L at cl 0.9-0.5.",
               "The hover design (V = 0) is possible because the design is written in the displacement velocity "
               "w = zeta V rather than zeta."]
     (out_dir / "rotor_design.md").write_text("\n".join(lines) + "\n")
