@@ -64,7 +64,6 @@ axial mass flow only, which over-predicts induced power in edgewise flight.
 from __future__ import annotations
 
 import math
-from functools import lru_cache
 
 import casadi as ca
 import numpy as np

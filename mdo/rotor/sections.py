@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
 
 from ..core.errors import InputError
 from ..core.smooth import sigmoid, smooth_abs, smooth_max, xp
