@@ -31,6 +31,7 @@ import numpy as np
 
 from ..core.errors import InputError
 from .helical import DEFAULT_ROTATIONS, DEFAULT_STEPS_PER_ROTATION, full_wake_velocity
+from .frames import rotor_frame
 from .mean import apply_influence, influence
 
 __all__ = ["wake_influences", "external_velocity", "apply_influences", "wake_convection_speed"]
@@ -79,23 +80,24 @@ def _as_row(v, k, name):
     return ca.DM(a)
 
 
-def apply_influences(influences, gamma, omega_radps, v_wake_mps):
+def apply_influences(influences, gamma, omega_radps, v_wake_mps, axial_factor=1.0):
     """Σ over rotors of the averaged-wake velocity: (vx, vy, vz), each M×K, from the
-    per-rotor factored influences and per-rotor Γ (N×K), Ω and V_w (K values)."""
+    per-rotor factored influences and per-rotor Γ (N×K), Ω and V_w (K values);
+    ``axial_factor`` scales each rotor's velocity component along its own axis."""
     total = None
     for infl, g, om, vw in zip(influences, gamma, omega_radps, v_wake_mps):
         n = infl[0].shape[1]
         g = _as_nk(g, n, "gamma")
         k = g.shape[1]
         ratio = _as_row(om, k, "omega_radps") / _as_row(vw, k, "v_wake_mps")
-        v = apply_influence(infl, g * ca.repmat(ratio, n, 1), g)
+        v = apply_influence(infl, g * ca.repmat(ratio, n, 1), g, axial_factor)
         total = v if total is None else tuple(a + b for a, b in zip(total, v))
     return total
 
 
 def external_velocity(points, rotors, gamma, omega_radps, v_wake_mps, *, model: str = "mean",
                       influences=None, phases: int = 1, n_rotations=DEFAULT_ROTATIONS,
-                      steps_per_rotation=DEFAULT_STEPS_PER_ROTATION, phase_rad=0.0):
+                      steps_per_rotation=DEFAULT_STEPS_PER_ROTATION, phase_rad=0.0, axial_factor=1.0):
     """Wake-induced velocity of all ``rotors`` at ``points`` for K operating points.
 
     points: 3×M (numbers or MX).  rotors: list of WakeRotor.  gamma: per rotor N×K
@@ -104,6 +106,10 @@ def external_velocity(points, rotors, gamma, omega_radps, v_wake_mps, *, model: 
     the per-design factors of :func:`wake_influences`) or "full" (helical fixed wake; ``phases`` snapshots
     averaged, each ``n_rotations`` × ``steps_per_rotation`` rings per blade and
     element, blade 0 at ``phase_rad``).
+    axial_factor: scales each rotor's velocity component along its axis (1: the wake
+    as it is; 0: swirl and radial parts only — e.g. for the Kutta–Joukowski velocity
+    at the bound vortices when the slipstream's extra dynamic pressure is to be left
+    out of the forces, see README "Coupling").
     Returns (vx, vy, vz), each M×K (NumPy for numeric input, MX otherwise).
     """
     if len(gamma) != len(rotors) or len(omega_radps) != len(rotors) or len(v_wake_mps) != len(rotors):
@@ -112,7 +118,7 @@ def external_velocity(points, rotors, gamma, omega_radps, v_wake_mps, *, model: 
     m = pts.shape[1]
     if model == "mean":
         infl = influences if influences is not None else wake_influences(pts, rotors)
-        vx, vy, vz = apply_influences(infl, gamma, omega_radps, v_wake_mps)
+        vx, vy, vz = apply_influences(infl, gamma, omega_radps, v_wake_mps, axial_factor)
         if isinstance(vx, ca.DM):
             return np.array(vx), np.array(vy), np.array(vz)
         return vx, vy, vz
@@ -128,6 +134,10 @@ def external_velocity(points, rotors, gamma, omega_radps, v_wake_mps, *, model: 
                 v = full_wake_velocity(pts, r, g[:, j], om[j], vw[j], phases=phases, n_rotations=n_rotations,
                                        steps_per_rotation=steps_per_rotation, phase_rad=phase_rad)
                 v = v if isinstance(v, (ca.MX, ca.SX)) else ca.DM(v)
+                if not (isinstance(axial_factor, (int, float)) and axial_factor == 1.0):
+                    e_a = rotor_frame(r.axis if isinstance(r.axis, (ca.MX, ca.SX)) else ca.DM(np.asarray(r.axis, float)))[0]
+                    e_a = ca.DM(e_a) if not isinstance(e_a, (ca.MX, ca.SX)) else e_a
+                    v = v - (1 - axial_factor) * ca.mtimes(e_a, ca.mtimes(e_a.T, v))
                 cr.append(ca.reshape(v, 3 * m, 1))
             cr = ca.horzcat(*cr)
             cols = cr if cols is None else cols + cr

@@ -165,11 +165,12 @@ def influence_function(n_points: int, n_stations: int, blades: int, core_rel: fl
                        ["Ax", "Ar", "At", "e_a", "rvec", "tdir"])
 
 
-def apply_influence(infl, gamma_over_p, gamma):
+def apply_influence(infl, gamma_over_p, gamma, axial_factor=1.0):
     """Velocity components (vx, vy, vz), each M×K, from the factored influence ``infl``
-    (the 6 outputs of :func:`influence_function`) and per-node Γ/p and Γ (N×K)."""
+    (the 6 outputs of :func:`influence_function`) and per-node Γ/p and Γ (N×K).
+    ``axial_factor`` scales the component along the rotor axis (1: the wake as is)."""
     ax, ar, at, e_a, rvec, tdir = infl
-    ua = ca.mtimes(ax, gamma_over_p)                           # M×K
+    ua = axial_factor * ca.mtimes(ax, gamma_over_p)            # M×K
     ur = ca.mtimes(ar, gamma_over_p)
     ut = ca.mtimes(at, gamma)
     k = ua.shape[1]

@@ -21,11 +21,13 @@ PROWIM model adds +2.5° to the same geometry for its (different) sections; the
 sensitivity of the RMS errors to ±2.5° is printed and written to the summary.
 
 Models: the VLM of mdo.wing with the propeller wake of mdo.wake as external
-velocity at the control points and bound-vortex midpoints.  Forces: Kutta–Joukowski
-with the freestream velocity (``lift_velocity="freestream"``, the paper's code) for
-the primary result; the same with the local velocity (the slipstream's dynamic
-pressure on blown strips, ``"local"``) is computed alongside and reported — on this
-D/c ≈ 1 slipstream it over-predicts the blown lift at α = 4° (README).  The wake is the helical
+velocity at the control points (flow tangency) and at the bound-vortex midpoints
+(Kutta–Joukowski).  Three force couplings (``COUPLINGS``): "swirl" (primary) —
+Kutta–Joukowski with V∞ plus the wake's swirl and radial velocity, i.e. the force
+turns with the local flow direction but feels the freestream dynamic pressure;
+"freestream" — V∞ only (the paper's code); "local" — V∞ plus the whole wake
+velocity, so that blown strips feel the slipstream's dynamic pressure.  On this
+D/c ≈ 1 slipstream "local" over-predicts the blown lift at α = 4° (README).  The wake is the helical
 fixed wake of the paper (5 rotations, 36 steps per rotation), averaged over
 ``--phases`` blade positions within one blade passage (the snapshot, phases = 1,
 and the NLP's averaged-wake table are reported alongside).  The BEMT runs at the
@@ -139,22 +141,35 @@ def strip_cn(vlm, out):
     return y[order] / SEMISPAN, (fn / cw)[order]
 
 
-def solve_case(vlm, alpha_rad, fs, rotor_list=None, state=None, model="full", phases=8):
+COUPLINGS = {   # name -> (VLM lift_velocity, axial factor of the wake velocity at the bound vortices)
+    "swirl": ("local", 0.0),             # forces with V_inf + swirl/radial wake velocity, freestream q
+    "freestream": ("freestream", 1.0),   # the paper's code: forces with V_inf only
+    "local": ("local", 1.0),             # forces with the full local velocity (slipstream q)
+}
+# (label, wake model, phases, coupling) of every props-on variant computed
+VARIANTS = (
+    ("full", "full", None, "swirl"),
+    ("snapshot", "full", 1, "swirl"),
+    ("mean", "mean", None, "swirl"),
+    ("full_freestream", "full", None, "freestream"),
+    ("full_localq", "full", None, "local"),
+)
+
+
+def solve_case(vlm, alpha_rad, fs, rotor_list=None, state=None, model="full", phases=8, coupling="swirl"):
     g = vlm.geometry
     cp = np.array(g["cp"])
     rb = np.array(g["rb"])
     kw = {}
     if rotor_list is not None:
-        pts = np.hstack([cp, rb])
-        n = cp.shape[1]
-        gam = [state["gamma"]] * len(rotor_list)
-        om = [state["omega"]] * len(rotor_list)
-        vw = [state["v_wake"]] * len(rotor_list)
+        k = len(rotor_list)
+        args = (rotor_list, [state["gamma"]] * k, [state["omega"]] * k, [state["v_wake"]] * k)
         opts = dict(model=model)
         if model == "full":
             opts.update(phases=phases)
-        vx, vy, vz = wake.external_velocity(pts, rotor_list, gam, om, vw, **opts)
-        kw = dict(v_ext=(vx[:n], vy[:n], vz[:n]), v_ext_bound=(vx[n:], vy[n:], vz[n:]))
+        vc = wake.external_velocity(cp, *args, **opts)
+        vb = wake.external_velocity(rb, *args, axial_factor=COUPLINGS[coupling][1], **opts)
+        kw = dict(v_ext=vc, v_ext_bound=vb)
     out = vlm.solve(alpha_rad, fs["V"], rho=fs["rho"], mach=MACH, **kw)
     return strip_cn(vlm, out), out
 
@@ -168,8 +183,7 @@ def run(out_dir, nspan=48, nchord=6, phases=8, pitch_deg=PITCH_DEG, sensitivity=
     out_dir = Path(out_dir)
     out_dir.mkdir(parents=True, exist_ok=True)
     fs = freestream()
-    vlm = make_vlm(nspan, nchord, "freestream")
-    vlm_local = make_vlm(nspan, nchord, "local")
+    vlms = {c: make_vlm(nspan, nchord, lv) for c, (lv, _) in COUPLINGS.items()}
     data = measured()
     geom = beaver(pitch_deg)
     summary = []
@@ -177,24 +191,23 @@ def run(out_dir, nspan=48, nchord=6, phases=8, pitch_deg=PITCH_DEG, sensitivity=
     for a_deg in ALPHAS_DEG:
         a = math.radians(a_deg)
         st = prop_state(geom, a, fs)
-        (y, cn_off), _ = solve_case(vlm, a, fs)
+        (y, cn_off), _ = solve_case(vlms["swirl"], a, fs)
         res = {}
         for sense in ("inboard_up", "outboard_up"):
             rl = rotors(geom, sense, len(st["gamma"]))
-            for model, ph in (("full", phases), ("snapshot", 1), ("mean", None)):
-                (_, cn), o = solve_case(vlm, a, fs, rl, st, "mean" if model == "mean" else "full", ph or 1)
-                res[(sense, model)] = (cn, float(np.array(o["CL"]).ravel()[0]))
-            (_, cn), o = solve_case(vlm_local, a, fs, rl, st, "full", phases)
-            res[(sense, "full_localq")] = (cn, float(np.array(o["CL"]).ravel()[0]))
+            for label, model, ph, coupling in VARIANTS:
+                (_, cn), o = solve_case(vlms[coupling], a, fs, rl, st, model, ph or phases, coupling)
+                res[(sense, label)] = (cn, float(np.array(o["CL"]).ravel()[0]))
         with open(out_dir / f"veldhuis_alpha{int(a_deg)}.csv", "w", newline="") as f:
             w = csv.writer(f)
             w.writerow(["y_over_semispan", "Cn_props_off", "Cn_inboard_up", "Cn_outboard_up"])
             for i in range(len(y)):
                 w.writerow([f"{y[i]:.5f}", f"{cn_off[i]:.5f}", f"{res[('inboard_up', 'full')][0][i]:.5f}",
                             f"{res[('outboard_up', 'full')][0][i]:.5f}"])
+        labels = [v[0] for v in VARIANTS]
         with open(out_dir / f"veldhuis_models_alpha{int(a_deg)}.csv", "w", newline="") as f:
             w = csv.writer(f)
-            cols = [(s, m) for s in ("inboard_up", "outboard_up") for m in ("full", "snapshot", "mean", "full_localq")]
+            cols = [(s, m) for s in ("inboard_up", "outboard_up") for m in labels]
             w.writerow(["y_over_semispan", "Cn_props_off"] + [f"Cn_{s}_{m}" for s, m in cols])
             for i in range(len(y)):
                 w.writerow([f"{y[i]:.5f}", f"{cn_off[i]:.5f}"] + [f"{res[c][0][i]:.5f}" for c in cols])
@@ -202,14 +215,17 @@ def run(out_dir, nspan=48, nchord=6, phases=8, pitch_deg=PITCH_DEG, sensitivity=
         d_off = data.get(("props_off", a_deg))
         d_on = data.get(("props_on_inboard_up", a_deg))
         row["rms_props_off"] = rms_against(y, cn_off, d_off) if d_off is not None else float("nan")
-        for m in ("full", "snapshot", "mean", "full_localq"):
+        for m in labels:
             row[f"rms_inboard_up_{m}"] = (rms_against(y, res[("inboard_up", m)][0], d_on)
                                           if d_on is not None else float("nan"))
         summary.append(row)
-        print(f"alpha {a_deg:4.1f} deg: CT {st['CT']:.4f}, RMS props off {row['rms_props_off']:.4f}, "
-              f"inboard-up full {row['rms_inboard_up_full']:.4f} snapshot {row['rms_inboard_up_snapshot']:.4f} "
-              f"mean {row['rms_inboard_up_mean']:.4f}; with local dynamic pressure {row['rms_inboard_up_full_localq']:.4f}"
-              f"  ({time.perf_counter() - t0:.0f} s)")
+        if d_on is not None:
+            print(f"alpha {a_deg:4.1f} deg: CT {st['CT']:.4f}; RMS props off {row['rms_props_off']:.4f}; inboard-up: "
+                  + ", ".join(f"{m} {row['rms_inboard_up_' + m]:.4f}" for m in labels)
+                  + f"  ({time.perf_counter() - t0:.0f} s)")
+        else:
+            print(f"alpha {a_deg:4.1f} deg: CT {st['CT']:.4f}; no measurements shipped (computed and plotted)"
+                  f"  ({time.perf_counter() - t0:.0f} s)")
         if plots:
             _plot(out_dir / f"veldhuis_alpha{int(a_deg)}.png", a_deg, y, cn_off, res, d_off, d_on, st)
     sens = []
@@ -218,21 +234,20 @@ def run(out_dir, nspan=48, nchord=6, phases=8, pitch_deg=PITCH_DEG, sensitivity=
             g2 = beaver(pitch_deg + dp)
             a = math.radians(4.0)
             st = prop_state(g2, a, fs)
-            (y, cn), _ = solve_case(vlm, a, fs, rotors(g2, "inboard_up", len(st["gamma"])), st, "mean")
+            (y, cn), _ = solve_case(vlms["swirl"], a, fs, rotors(g2, "inboard_up", len(st["gamma"])), st, "mean")
             r = rms_against(y, cn, data[("props_on_inboard_up", 4.0)])
             sens.append((pitch_deg + dp, st["CT"], r))
             print(f"  pitch {pitch_deg + dp:+.1f} deg: CT {st['CT']:.4f}, RMS inboard-up (alpha 4, mean wake) {r:.4f}")
+    labels = [v[0] for v in VARIANTS]
     with open(out_dir / "veldhuis_summary.csv", "w", newline="") as f:
         w = csv.writer(f)
-        w.writerow(["alpha_deg", "pitch_deg", "CT", "thrust_N", "rms_props_off", "rms_inboard_up_full",
-                    "rms_inboard_up_snapshot", "rms_inboard_up_mean", "rms_inboard_up_full_localq"])
+        w.writerow(["alpha_deg", "pitch_deg", "CT", "thrust_N", "rms_props_off"]
+                   + [f"rms_inboard_up_{m}" for m in labels])
         for r in summary:
             w.writerow([r["alpha_deg"], r["pitch_deg"], f"{r['CT']:.5f}", f"{r['thrust_N']:.3f}",
-                        f"{r['rms_props_off']:.5f}", f"{r['rms_inboard_up_full']:.5f}",
-                        f"{r['rms_inboard_up_snapshot']:.5f}", f"{r['rms_inboard_up_mean']:.5f}",
-                        f"{r['rms_inboard_up_full_localq']:.5f}"])
+                        f"{r['rms_props_off']:.5f}"] + [f"{r['rms_inboard_up_' + m]:.5f}" for m in labels])
         for p, ct, r in sens:
-            w.writerow([4.0, p, f"{ct:.5f}", "", "", "", "", f"{r:.5f}", ""])
+            w.writerow([4.0, p, f"{ct:.5f}", "", ""] + ["" if m != "mean" else f"{r:.5f}" for m in labels])
     return summary, sens
 
 
@@ -246,6 +261,8 @@ def _plot(path, a_deg, y, cn_off, res, d_off, d_on, st):
     ax.plot(y, res[("inboard_up", "mean")][0], "C0:", lw=1.2, label="  same, averaged-wake table (NLP form)")
     ax.plot(y, res[("inboard_up", "full_localq")][0], "C2-.", lw=1.0,
             label="  same, slipstream dynamic pressure in the forces")
+    ax.plot(y, res[("inboard_up", "full_freestream")][0], "C1--", lw=0.8,
+            label="  same, forces with the freestream only (paper's code)")
     ax.plot(y, res[("outboard_up", "full")][0], "C3--", lw=1.3, label="VLM + helical wake, outboard-up")
     if d_off is not None:
         ax.plot(d_off[:, 0], d_off[:, 1], "ks", mfc="none", label="Veldhuis 2005, propellers off")

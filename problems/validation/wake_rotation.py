@@ -206,19 +206,26 @@ def wake_rotors(veh: Vehicle, geom, senses):
     return out
 
 
-def solve(vlm, rotors, state, at, model="mean", phases=8):
+COUPLINGS = {   # name -> (VLM lift_velocity, axial factor of the wake velocity at the bound vortices)
+    "swirl": ("local", 0.0),          # forces with V_inf + swirl/radial wake velocity, freestream q
+    "freestream": ("freestream", 1.0),  # the paper's code: forces with V_inf only
+    "local": ("local", 1.0),          # forces with the full local velocity (slipstream q)
+}
+
+
+def solve(vlm, rotors, state, at, model="mean", phases=8, coupling="swirl"):
     g = vlm.geometry
     cp, rb = np.array(g["cp"]), np.array(g["rb"])
     a = math.radians(ALPHA_DEG)
     kw = {}
     if rotors:
         n = cp.shape[1]
-        pts = np.hstack([cp, rb])
         k = len(rotors)
         opts = dict(model=model, phases=phases) if model == "full" else dict(model="mean")
-        vx, vy, vz = wake.external_velocity(pts, rotors, [state["gamma"]] * k, [state["omega"]] * k,
-                                            [state["v_wake"]] * k, **opts)
-        kw = dict(v_ext=(vx[:n], vy[:n], vz[:n]), v_ext_bound=(vx[n:], vy[n:], vz[n:]))
+        args = (rotors, [state["gamma"]] * k, [state["omega"]] * k, [state["v_wake"]] * k)
+        vc = wake.external_velocity(cp, *args, **opts)
+        vb = wake.external_velocity(rb, *args, axial_factor=COUPLINGS[coupling][1], **opts)
+        kw = dict(v_ext=vc, v_ext_bound=vb)
     out = vlm.solve(a, V_MPS, rho=at["rho"], mach=V_MPS / at["a"], **kw)
     pdrag = profile_drag(vlm, out, at["rho"], at["mu"], V_MPS / at["a"])
     return out, float(np.ravel(np.array(pdrag["CD_p"]))[0])
@@ -232,9 +239,9 @@ def strip_curves(vlm, out):
     return y, cl, surf
 
 
-def run_vehicle(veh: Vehicle, out_dir: Path, model="mean", lift_velocity="freestream", phases=8, plots=True):
+def run_vehicle(veh: Vehicle, out_dir: Path, model="mean", coupling="swirl", phases=8, plots=True):
     at = atmos()
-    vlm = VLM(veh.surfaces, mach_ref=V_MPS / at["a"], lift_velocity=lift_velocity, S_ref=veh.S_ref)
+    vlm = VLM(veh.surfaces, mach_ref=V_MPS / at["a"], lift_velocity=COUPLINGS[coupling][0], S_ref=veh.S_ref)
     geom, omega = design_rotor(veh, at)
     q = 0.5 * at["rho"] * V_MPS**2
     n_rot = 2 * len(veh.rotor_y)
@@ -249,7 +256,7 @@ def run_vehicle(veh: Vehicle, out_dir: Path, model="mean", lift_velocity="freest
         if senses is None:
             out, cdp = out0, cdp0
         else:
-            out, cdp = solve(vlm, wake_rotors(veh, geom, senses), st, at, model, phases)
+            out, cdp = solve(vlm, wake_rotors(veh, geom, senses), st, at, model, phases, coupling)
         CL = float(np.ravel(np.array(out["CL"]))[0])
         CDi = float(np.ravel(np.array(out["CDi"]))[0])
         ld = CL / (CDi + cdp) if np.isfinite(cdp) else float("nan")
@@ -335,7 +342,7 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--out", default=str(REPO / "results" / "rotation"))
     ap.add_argument("--model", default="mean", choices=("mean", "full"))
-    ap.add_argument("--lift-velocity", default="freestream", choices=("freestream", "local"))
+    ap.add_argument("--coupling", default="swirl", choices=tuple(COUPLINGS))
     ap.add_argument("--phases", type=int, default=8)
     ap.add_argument("--vehicles", default="ga2p,ga8p,ttw")
     args = ap.parse_args(argv)
@@ -345,15 +352,15 @@ def main(argv=None):
     all_rows, all_curves = [], {}
     for key in args.vehicles.split(","):
         veh = {"ga2p": ga2p, "ga8p": ga8p, "ttw": ttw}[key]()
-        rows, curves = run_vehicle(veh, out_dir, args.model, args.lift_velocity, args.phases)
+        rows, curves = run_vehicle(veh, out_dir, args.model, args.coupling, args.phases)
         all_rows += rows
         all_curves[veh.name] = curves
     with open(out_dir / "summary.csv", "w", newline="") as f:
         w = csv.writer(f)
-        w.writerow(["vehicle", "case", "CL", "CDi", "CDp", "L_over_D", "L_over_Di", "wake_model", "lift_velocity"])
+        w.writerow(["vehicle", "case", "CL", "CDi", "CDp", "L_over_D", "L_over_Di", "wake_model", "coupling"])
         for r in all_rows:
             w.writerow([r["vehicle"], r["case"], f"{r['CL']:.5f}", f"{r['CDi']:.6f}", f"{r['CDp']:.6f}",
-                        f"{r['L_over_D']:.3f}", f"{r['L_over_Di']:.3f}", args.model, args.lift_velocity])
+                        f"{r['L_over_D']:.3f}", f"{r['L_over_Di']:.3f}", args.model, args.coupling])
     if "GA-2P" in all_curves and "GA-8P" in all_curves:
         with open(out_dir / "checks.csv", "w", newline="") as f:
             w = csv.writer(f)
