@@ -17,8 +17,8 @@ KINK_OPS = {ca.OP_FMAX, ca.OP_FMIN, ca.OP_FABS, ca.OP_IF_ELSE_ZERO, ca.OP_SIGN, 
 # Voltage error budget (mV): all points of a curve, and the operating range s >= 0.2
 # (below it the knee is steep and the digitized curves disagree with each other by
 # ~0.1 Ah in cut-off capacity at equal temperature).
-RMS_ALL_MV = 32.0
-RMS_SOC02_MV = 19.0
+RMS_ALL_MV = 34.0
+RMS_SOC02_MV = 18.0
 
 
 def _ops(f):
@@ -89,6 +89,9 @@ def test_physical_form():
     v1 = cell.voltage(S, I, T)
     v2 = cell.voltage(S, I + 1e-4, T)
     assert np.all(v2 < v1)
+    # loaded voltage increases with the state of charge at every current, also past the knee
+    S2, I2, T2 = np.meshgrid(np.linspace(-0.05, 1.0, 421), np.linspace(0, 12, 25), np.linspace(0, 50, 21))
+    assert np.all(np.diff(cell.voltage(S2, I2, T2), axis=1) > 0)
     # colder cell: lower loaded voltage (2-8 A, mid charge)
     for i in (2.0, 8.0):
         assert cell.voltage(0.5, i, 0.0) < cell.voltage(0.5, i, 25.0) < cell.voltage(0.5, i, 50.0) + 0.03

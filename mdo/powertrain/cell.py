@@ -10,20 +10,22 @@ floats, NumPy arrays and CasADi expressions::
   ``T``; ``I`` the cell current (A, discharge > 0); ``T`` the ambient (pack)
   temperature in deg C, a parameter of a problem (0..50 deg C, the measured range).
 * ``U(s)`` the open-circuit voltage: a degree-7 Chebyshev series in ``2s - 1``
-  (increasing in s; the collapse near empty is carried by the ``exp(-s/0.05)``
+  (increasing in s; the collapse near empty is carried by the ``exp(-s/0.15)``
   terms of the overpotential, whose amplitude grows at low temperature).        (C2)
 * ``I R`` an ohmic drop and ``A asinh(I/I_k)`` (I_k = 1 A) a Butler-Volmer-type
   kinetic overpotential (symmetric Butler-Volmer gives exactly this form,
   Newman & Thomas-Alyea, *Electrochemical Systems*, 3rd ed., Eq. 8.6); both
   coefficients are smooth surfaces ``sum_jk c_jk phi_j(s) psi_k(tau)`` with
-  ``phi = [1, 1-s, (1-s)^2, exp(-s/0.05)]``, ``psi = [1, tau, tau^2]``,
+  ``phi = [1, 1-s, (1-s)^2, exp(-s/0.15)]``, ``psi = [1, tau, tau^2]``,
   ``tau = (T - 25)/25``.                                                         (C3)
 * ``Q_u(T) = Q_nom exp(c0 + c1 tau + c2 tau^2)``, fitted to the measured cut-off
   capacities (3.07 Ah at 0 deg C .. 3.40 Ah at 50 deg C; Q_nom = 3.55 Ah).       (C4)
 
 Physics the form guarantees: ``V = U`` at zero current; ``-dV/dI = R + A /
 sqrt(I^2 + I_k^2) > 0`` because the fit constrains ``R >= 5 mOhm`` and ``A >= 0``
-on a grid covering s in [0, 1] and T in [0, 50] deg C; ``U`` increases with ``s``.
+on a grid covering s in [-0.05, 1] and T in [0, 50] deg C (a unique current for
+each power below the maximum); the loaded voltage increases with ``s`` for every
+current 0..12 A on that grid (no spurious rise past the knee).
 The self-heating of the measured cells (they warm by up to 30 K at 8 A) is inside
 the fitted surfaces: the model reproduces a discharge *in the thermal environment
 of the test* starting at ambient ``T``; a pack with other cooling runs warmer or
@@ -63,7 +65,7 @@ AH = 3600.0  # coulombs per ampere-hour
 
 # Structure of the fit (also used by cell_fit.py; change both together).
 OCV_DEGREE = 7
-SOC_BASIS_WIDTH = 0.05
+SOC_BASIS_WIDTH = 0.15
 TEMP_REF_C = 25.0
 TEMP_SPAN_C = 25.0
 CURRENT_REF_A = 1.0
@@ -79,7 +81,7 @@ def _clenshaw(coeffs, x):
 
 
 def soc_basis(soc):
-    """phi(s) of Eq. C3 as a list: [1, 1-s, (1-s)^2, exp(-s/0.05)]."""
+    """phi(s) of Eq. C3 as a list: [1, 1-s, (1-s)^2, exp(-s/0.15)]."""
     lib = xp(soc)
     y = 1.0 - soc
     return [1.0 + 0.0 * soc, y, y * y, lib.exp(-soc / SOC_BASIS_WIDTH)]

@@ -5,7 +5,7 @@
   discharge of a pack (one cell by default) from full to the cut-off voltage per
   cell; writes ``capacity_Ah,voltage_V`` (pack values) to FILE or stdout.
 * ``mdo battery fit``: the cell model's voltage error table against the measured
-  curves.
+  curves; ``mdo battery report [--out DIR]``: figures and tables (results/powertrain).
 * ``mdo motor size --power-kw P --rpm N --voltage V [--efficiency E]
   [--copper-loss-fraction F]``: Kv, resistance, no-load current, mass, peak
   efficiency and torque-speed line of a DC motor sized from its rating.
@@ -94,6 +94,13 @@ def _cmd_fit(args) -> int:
     return 0
 
 
+def _cmd_report(args) -> int:
+    from .report import write_report
+    for f in write_report(args.out):
+        print(f"mdo battery: wrote {f}")
+    return 0
+
+
 def _cmd_motor_size(args) -> int:
     from .motor import size_dc_motor
     if args.power_kw is None or args.power_kw <= 0:
@@ -134,6 +141,11 @@ def register(subparsers) -> None:
     d.set_defaults(func=_cmd_discharge)
     f = bsub.add_parser("fit", help="voltage errors of the cell model against the measured curves")
     f.set_defaults(func=_cmd_fit)
+    rp = bsub.add_parser("report", help="figures and tables: model vs measured, motors, network balance",
+                         description="Write discharge_fit.png, discharge_residuals.png, fit_errors.md, "
+                                     "motors.png, balance.md into a folder.")
+    rp.add_argument("--out", default="results/powertrain", help="folder (default results/powertrain)")
+    rp.set_defaults(func=_cmd_report)
 
     mot = subparsers.add_parser("motor", help="DC motor sizing", description="DC motor models of mdo.powertrain.")
     msub = mot.add_subparsers(dest="motor_command", metavar="ACTION")
