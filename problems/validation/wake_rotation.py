@@ -34,7 +34,12 @@ speed of the study (J) — except the TTW rotor, designed at a 0.55 rotational t
 Mach number (a hover rotor); in the study each rotor's collective pitch is trimmed
 so that it delivers its share of a cruise drag D = q S · 0.03 (an assumed cruise
 CD; the paper does not give the thrust of these cases): 772 N per GA-2P propeller,
-193 N per GA-8P propeller, 284 N per TTW rotor.  The BEMT runs at the rotor's
+193 N per GA-8P propeller, 284 N per TTW rotor.  The TTW rotor is a hover design;
+at J = 1 and 284 N its inner blade windmills (negative circulation inboard of
+0.55 R), which reverses the swirl of the inner slipstream.  "TTW beta_c=20" repeats
+the TTW cases at the cruise pitch command of Table 5 (β_c = +20°: circulation
+positive along the blade, 14 kN per rotor — far above the cruise drag, but the
+loading sense of the paper's Fig. 10).  The BEMT runs at the rotor's
 incidence (azimuth-averaged); its blade circulation feeds the wake (averaged table
 by default, ``--model full`` for the helical fixed wake of the paper).
 """
@@ -150,6 +155,15 @@ def ttw(nspan=36, nchord=4):
                     "Case 4: inner outboard-up, tip inboard-up": [ou, iu, ou, iu]})
 
 
+def ttw_pitch20(nspan=36, nchord=4):
+    """The TTW with its rotors at the cruise pitch command of Table 5 (beta_c = +20 deg)
+    instead of trimmed to the cruise drag."""
+    v = ttw(nspan, nchord)
+    v.name = "TTW beta_c=20"
+    v.design = dict(v.design, pitch_deg=20.0)
+    return v
+
+
 def design_rotor(veh: Vehicle, at):
     n_rps = V_MPS / (veh.J * 2 * veh.radius)
     kw = dict(blades=veh.blades, radius_m=veh.radius, speed_mps=veh.design["speed_mps"], airfoil="naca4412",
@@ -163,14 +177,18 @@ def design_rotor(veh: Vehicle, at):
     return d["geometry"], 2 * math.pi * n_rps
 
 
-def trimmed_state(geom, omega, alpha_rad, thrust_target, at):
-    """BEMT at the study's operating point with the collective pitch that gives ``thrust_target``."""
+def trimmed_state(geom, omega, alpha_rad, thrust_target, at, pitch_deg=None):
+    """BEMT at the study's operating point with the collective pitch that gives
+    ``thrust_target`` (or at the given ``pitch_deg``)."""
     v_ax, v_ip = V_MPS * math.cos(alpha_rad), V_MPS * abs(math.sin(alpha_rad))
 
     def run(pitch):
         return analyze(geom, omega_radps=omega, v_axial_mps=v_ax, v_inplane_mps=v_ip, rho_kgpm3=at["rho"],
                        mu_Pas=at["mu"], a_mps=at["a"], pitch_rad=pitch, n_stations=N_STATIONS,
                        n_azimuth=12 if v_ip > 0 else 1)
+
+    if pitch_deg is not None:
+        return _state(run(math.radians(pitch_deg)), omega, v_ax, pitch_deg)
 
     grid = np.radians(np.arange(-10.0, 40.01, 2.5))
     res = run(grid)
@@ -186,10 +204,15 @@ def trimmed_state(geom, omega, alpha_rad, thrust_target, at):
             hi = mid
         else:
             lo = mid
-    r = run(0.5 * (lo + hi))
+    return _state(run(0.5 * (lo + hi)), omega, v_ax, math.degrees(0.5 * (lo + hi)))
+
+
+def _state(r, omega, v_ax, pitch_deg):
+    if not bool(np.all(r.converged)):
+        raise RuntimeError("BEMT did not converge")
     va = float(np.ravel(r["va_mean_mps"])[0])
     return dict(gamma=np.asarray(r["gamma_m2ps"]).ravel(), omega=omega,
-                v_wake=wake.wake_convection_speed(v_ax, va), pitch_deg=math.degrees(0.5 * (lo + hi)),
+                v_wake=wake.wake_convection_speed(v_ax, va), pitch_deg=pitch_deg,
                 thrust_N=float(np.ravel(r["thrust_N"])[0]), CT=float(np.ravel(r["CT"])[0]),
                 power_W=float(np.ravel(r["power_W"])[0]))
 
@@ -246,7 +269,7 @@ def run_vehicle(veh: Vehicle, out_dir: Path, model="mean", coupling="swirl", pha
     q = 0.5 * at["rho"] * V_MPS**2
     n_rot = 2 * len(veh.rotor_y)
     t_target = q * veh.S_ref * CD_CRUISE / n_rot
-    st = trimmed_state(geom, omega, math.radians(ALPHA_DEG), t_target, at)
+    st = trimmed_state(geom, omega, math.radians(ALPHA_DEG), t_target, at, veh.design.get("pitch_deg"))
     print(f"{veh.name}: {n_rot} rotors, thrust {st['thrust_N']:.0f} N each (CT {st['CT']:.4f}, pitch "
           f"{st['pitch_deg']:+.2f} deg), {veh.J=}, omega {omega:.1f} rad/s")
     rows, curves = [], {}
@@ -264,7 +287,7 @@ def run_vehicle(veh: Vehicle, out_dir: Path, model="mean", coupling="swirl", pha
                          L_over_Di=CL / CDi))
         curves[name] = strip_curves(vlm, out)
         print(f"  {name:42s} CL {CL:.4f}  CDi {CDi:.5f}  CDp {cdp:.5f}  L/D {ld:6.2f}  L/Di {CL / CDi:6.2f}")
-    tag = veh.name.lower().replace("-", "")
+    tag = veh.name.lower().replace("-", "").replace(" ", "_").replace(",", "").replace("=", "")
     with open(out_dir / f"{tag}_spanwise_cl.csv", "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(["case", "surface", "y_m", "cl"])
@@ -335,6 +358,17 @@ def checks(all_rows, all_curves):
     best = max(ga8, key=lambda r: r[key])
     out.append((f"GA-8P case with the highest {key}: {best['case']}", best[key],
                 best["case"].startswith("Case 1")))
+    # 3. TTW: tip rotors inboard-up (cases 1, 4) raise cl near the wingtips (outer 15 % of the span)
+    for veh in ("TTW", "TTW beta_c=20"):
+        if veh not in all_curves:
+            continue
+        c = all_curves[veh]
+        tip = {}
+        for name, (y, cl, s) in c.items():
+            m = (s == 0) & (y > 0.85 * 4.8)
+            tip[name[:6]] = float(np.mean(cl[m]))
+        d = min(tip["Case 1"], tip["Case 4"]) - max(tip["Case 2"], tip["Case 3"])
+        out.append((f"{veh}: min tip cl of cases 1,4 - max of cases 2,3 (main wing, y > 0.85 b/2)", d, d > 0))
     return out
 
 
@@ -344,14 +378,14 @@ def main(argv=None):
     ap.add_argument("--model", default="mean", choices=("mean", "full"))
     ap.add_argument("--coupling", default="swirl", choices=tuple(COUPLINGS))
     ap.add_argument("--phases", type=int, default=8)
-    ap.add_argument("--vehicles", default="ga2p,ga8p,ttw")
+    ap.add_argument("--vehicles", default="ga2p,ga8p,ttw,ttw20")
     args = ap.parse_args(argv)
     out_dir = Path(args.out)
     out_dir.mkdir(parents=True, exist_ok=True)
     t0 = time.perf_counter()
     all_rows, all_curves = [], {}
     for key in args.vehicles.split(","):
-        veh = {"ga2p": ga2p, "ga8p": ga8p, "ttw": ttw}[key]()
+        veh = {"ga2p": ga2p, "ga8p": ga8p, "ttw": ttw, "ttw20": ttw_pitch20}[key]()
         rows, curves = run_vehicle(veh, out_dir, args.model, args.coupling, args.phases)
         all_rows += rows
         all_curves[veh.name] = curves
