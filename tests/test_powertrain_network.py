@@ -107,7 +107,7 @@ def test_nlp_mode_collocated_state_of_charge():
     out, ib = pt.add_to_problem(p, q, w, soc, init_battery_current_A=200.0,
                                 labels=[f"node {k}" for k in range(n)])
     p.constrain("soc start", soc[0], rhs=1.0)
-    p.constrain("soc dynamics", ca.mtimes(ca.DM(col.D), soc) - T * out["soc_rate_per_s"].T,
+    p.constrain("soc dynamics", ca.mtimes(ca.DM(col.D[1:]), soc) - T * out["soc_rate_per_s"][1:].T,
                 scale=T * pt.soc_rate_scale_per_s)
     e_used = pt.energy_used_J(soc[0], soc[-1])
     p.minimize(e_used, unit="J", scale=1e7)

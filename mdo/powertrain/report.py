@@ -114,31 +114,41 @@ def plot_motors(path):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    from .network import PAPER_POWERTRAINS, paper_powertrain
-    fig, axes = plt.subplots(1, 2, figsize=(12, 4.5))
-    for name in PAPER_POWERTRAINS:
+    from .network import PAPER_POWERTRAINS, paper_powertrain, propeller_torque_law
+    fig, axes = plt.subplots(2, 3, figsize=(15, 8))
+    for col, name in enumerate(PAPER_POWERTRAINS):
         m = paper_powertrain(name).motor
-        for frac, ls in ((1.0, "-"), (0.6, "--")):
+        law = propeller_torque_law(m.rated_torque_Nm, m.rated_speed_radps)
+        q = np.linspace(0.005, 1.6, 400) * m.rated_torque_Nm
+        for frac in (1.0, 0.75, 0.5):
             V = frac * m.rated_voltage_V
-            q = np.linspace(0.01, 1.6, 400) * m.rated_torque_Nm
             w = m.speed_at_voltage_radps(V, q)
             ok = w > 0
-            eta = m.efficiency(q[ok], w[ok])
-            axes[0].plot(q[ok] / m.rated_torque_Nm, eta, ls, label=f"{name}, {V:.0f} V")
-            axes[1].plot(q / m.rated_torque_Nm, w / m.rated_speed_radps, ls, label=f"{name}, {V:.0f} V")
-    axes[0].set_ylim(0.6, 1.0)
-    axes[0].axhspan(0.85, 0.95, color="0.9", zorder=0)
-    axes[0].set_xlabel("torque / rated torque")
-    axes[0].set_ylabel("motor efficiency")
-    axes[1].set_xlabel("torque / rated torque")
-    axes[1].set_ylabel("speed / rated speed")
-    for ax in axes:
-        ax.grid(alpha=0.3)
-        ax.legend(fontsize=7)
-    fig.suptitle("DC motors sized for Table 1 (eta 0.94 and 60 % copper losses at the rated point; "
-                 "rated voltage 0.9 x pack nominal)", fontsize=10)
+            axes[0, col].plot(q[ok], m.efficiency(q[ok], w[ok]), label=f"{V:.0f} V")
+            axes[1, col].plot(q, w / u.RPM, label=f"{V:.0f} V")
+            eta_max, i_star = m.peak_efficiency(V)
+            q_star = (i_star - m.no_load_current_A) / m.kv_radps_per_V
+            axes[0, col].plot([q_star], [eta_max], "k.", ms=6)
+        wl = np.linspace(0.0, 1.1, 100) * m.rated_speed_radps
+        axes[1, col].plot(law(wl), wl / u.RPM, "k:", label="propeller load Q ~ omega^2")
+        axes[1, col].plot([m.rated_torque_Nm], [m.rated_speed_radps / u.RPM], "ks", ms=5, label="rated point")
+        axes[0, col].axhspan(0.85, 0.95, color="0.92", zorder=0)
+        axes[0, col].set_ylim(0.6, 1.0)
+        axes[0, col].set_title(f"{name}: {m.rated_power_W / 1e3:g} kW, Kv {m.kv_rpm_per_V:.2f} rpm/V, "
+                               f"R {1e3 * m.resistance_ohm:.0f} mOhm, I0 {m.no_load_current_A:.1f} A, "
+                               f"{m.mass_kg:.1f} kg", fontsize=9)
+        axes[0, col].set_ylabel("efficiency")
+        axes[1, col].set_ylabel("speed (rpm)")
+        axes[1, col].set_xlabel("shaft torque (N m)")
+        axes[1, col].set_ylim(0, None)
+        for ax in axes[:, col]:
+            ax.grid(alpha=0.3)
+            ax.legend(fontsize=7)
+    fig.suptitle("DC motors sized for Table 1 (efficiency 0.94, 60 % copper losses at the rated point; rated "
+                 "voltage 0.9 x pack nominal). Dots: peak efficiency (Eq. M5); bottom: torque-speed lines (Eq. M4)",
+                 fontsize=10)
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    fig.savefig(path, dpi=100)
     plt.close(fig)
 
 
