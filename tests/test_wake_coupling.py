@@ -1,0 +1,120 @@
+"""Coupling of the propeller wake into the VLM (paper Eqs. 5–6) and the Veldhuis check."""
+import importlib.util
+import math
+import sys
+from pathlib import Path
+
+import casadi as ca
+import numpy as np
+import pytest
+
+import mdo.wake as wake
+from mdo.wing.geometry import Surface
+from mdo.wing.vlm import VLM
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def _wing(lift_velocity="local", nspan=24, nchord=3):
+    s = Surface("wing", span=1.28, root_chord=0.24, nspan=nspan, nchord=nchord, breaks=(0.285, 0.469, 0.653))
+    return VLM([s], lift_velocity=lift_velocity)
+
+
+def _rotors(sense, n=10):
+    edges = np.linspace(0.14, 1.0, n + 1)
+    return [wake.WakeRotor(center=(-0.2, s * 0.3, 0.0), axis=(1, 0, 0), radius_m=0.118, s_edges=edges, blades=4,
+                           spin=wake.spin_for(s * 0.3, sense)) for s in (1, -1)]
+
+
+def _gamma(n=10):
+    s = np.linspace(0.14, 1.0, n + 1)
+    sc = 0.5 * (s[1:] + s[:-1])
+    return 1.2 * np.sqrt(np.clip(np.sin(np.pi * (sc - 0.14) / 0.86), 0, None))
+
+
+def _solve(vlm, rotors, gamma, model="mean", alpha=math.radians(4.0), axial_factor=1.0):
+    g = vlm.geometry
+    cp, rb = np.array(g["cp"]), np.array(g["rb"])
+    k = len(rotors)
+    args = (rotors, [gamma] * k, [1600.0] * k, [57.0] * k)
+    vc = wake.external_velocity(cp, *args, model=model)
+    vb = wake.external_velocity(rb, *args, model=model, axial_factor=axial_factor)
+    return vlm.solve(alpha, 51.0, rho=1.225, v_ext=vc, v_ext_bound=vb)
+
+
+@pytest.mark.parametrize("lift_velocity", ["local", "freestream"])
+@pytest.mark.parametrize("model", ["mean", "full"])
+def test_wake_off_limit_equals_clean_vlm(lift_velocity, model):
+    vlm = _wing(lift_velocity)
+    clean = vlm.solve(math.radians(4.0), 51.0, rho=1.225)
+    off = _solve(vlm, _rotors("inboard_up"), np.zeros(10), model)
+    for key in ("CL", "CDi", "cl"):
+        np.testing.assert_allclose(np.array(off[key]), np.array(clean[key]), rtol=1e-12, atol=1e-14)
+
+
+def test_inboard_up_raises_lift_inboard_of_the_nacelle_and_flips_with_sense():
+    vlm = _wing()
+    y = np.array(vlm.geometry["strip_mid"])[1, :]
+    inboard = (y > 0.3 - 0.118) & (y < 0.3 - 0.02)
+    outboard = (y > 0.3 + 0.02) & (y < 0.3 + 0.118)
+    cl0 = np.array(vlm.solve(math.radians(4.0), 51.0, rho=1.225)["cl"])[:, 0]
+    cl_iu = np.array(_solve(vlm, _rotors("inboard_up"), _gamma())["cl"])[:, 0]
+    cl_ou = np.array(_solve(vlm, _rotors("outboard_up"), _gamma())["cl"])[:, 0]
+    assert np.mean(cl_iu[inboard] - cl0[inboard]) > 0.02 and np.mean(cl_iu[outboard] - cl0[outboard]) < -0.01
+    assert np.mean(cl_ou[inboard] - cl0[inboard]) < -0.01 and np.mean(cl_ou[outboard] - cl0[outboard]) > 0.02
+    # at zero incidence the swirl effect is antisymmetric about the rotor axis in both senses
+    clz_iu = np.array(_solve(vlm, _rotors("inboard_up"), _gamma(), alpha=0.0, axial_factor=0.0)["cl"])[:, 0]
+    clz_ou = np.array(_solve(vlm, _rotors("outboard_up"), _gamma(), alpha=0.0, axial_factor=0.0)["cl"])[:, 0]
+    np.testing.assert_allclose(clz_iu, -clz_ou, atol=2e-3 * np.abs(clz_iu).max())
+
+
+def test_mean_and_full_wake_give_the_same_loading():
+    vlm = _wing()
+    cl_m = np.array(_solve(vlm, _rotors("inboard_up"), _gamma(), "mean")["cl"])[:, 0]
+    g = vlm.geometry
+    cp, rb = np.array(g["cp"]), np.array(g["rb"])
+    args = (_rotors("inboard_up"), [_gamma()] * 2, [1600.0] * 2, [57.0] * 2)
+    vc = wake.external_velocity(cp, *args, model="full", phases=8)
+    vb = wake.external_velocity(rb, *args, model="full", phases=8)
+    cl_f = np.array(vlm.solve(math.radians(4.0), 51.0, rho=1.225, v_ext=vc, v_ext_bound=vb)["cl"])[:, 0]
+    assert np.abs(cl_m - cl_f).max() <= 0.02 * np.abs(cl_f).max()
+
+
+def test_coupling_is_symbolic_one_influence_for_all_nodes():
+    """The NLP form: rotor position and radius symbolic, K nodes share the per-design influence."""
+    vlm = _wing(nspan=12, nchord=2)
+    cp, rb = np.array(vlm.geometry["cp"]), np.array(vlm.geometry["rb"])
+    yp, R = ca.MX.sym("yp"), ca.MX.sym("R")
+    K = 5
+    G = ca.MX.sym("G", 10, K)
+    rot = [wake.WakeRotor(center=ca.vertcat(-0.2, s * yp, 0), axis=(1, 0, 0), radius_m=R,
+                          s_edges=np.linspace(0.14, 1, 11), blades=4, spin=-s) for s in (1, -1)]
+    v_cp = wake.apply_influences(wake.wake_influences(cp, rot), [G, G], [1600.0] * 2, [57.0] * 2)
+    v_rb = wake.apply_influences(wake.wake_influences(rb, rot), [G, G], [1600.0] * 2, [57.0] * 2)
+    assert v_cp[2].shape == (cp.shape[1], K)
+    out = vlm.solve(ca.DM.ones(1, K) * math.radians(4.0), 51.0, rho=1.225, v_ext=v_cp, v_ext_bound=v_rb)
+    f = ca.Function("f", [yp, R, G], [out["CL"], ca.jacobian(ca.sum2(out["CL"]), ca.vertcat(yp, R))])
+    g0 = np.tile(_gamma()[:, None], (1, K))
+    cl, jac = f(0.3, 0.118, g0)
+    ref = _solve(vlm, _rotors("inboard_up"), _gamma())
+    np.testing.assert_allclose(np.array(cl).ravel(), float(np.array(ref["CL"]).ravel()[0]), rtol=1e-9)
+    assert np.all(np.isfinite(np.array(jac)))
+
+
+def test_veldhuis_alpha4_rms():
+    """PROWIM α = 4°, inboard-up, averaged wake (NLP form), coarse lattice: RMS of Cn against
+    Veldhuis (2005) ≤ 0.03 (acceptance; the full run gives 0.019, problems/validation/veldhuis.py)."""
+    spec = importlib.util.spec_from_file_location("veldhuis", ROOT / "problems" / "validation" / "veldhuis.py")
+    v = importlib.util.module_from_spec(spec)
+    sys.modules["veldhuis"] = v
+    spec.loader.exec_module(v)
+    fs = v.freestream()
+    data = v.measured()
+    vlm = v.make_vlm(32, 4, "local")
+    a = math.radians(4.0)
+    st = v.prop_state(v.beaver(), a, fs)
+    (y, cn_off), _ = v.solve_case(vlm, a, fs)
+    (y, cn_on), _ = v.solve_case(vlm, a, fs, v.rotors(v.beaver(), "inboard_up", 20), st, "mean", coupling="swirl")
+    rms_off = v.rms_against(y, cn_off, data[("props_off", 4.0)])
+    rms_on = v.rms_against(y, cn_on, data[("props_on_inboard_up", 4.0)])
+    assert rms_off <= 0.03 and rms_on <= 0.03, (rms_off, rms_on)
