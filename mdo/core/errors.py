@@ -21,6 +21,11 @@ class InputError(ValueError):
 
 
 def _numeric(value):
+    import casadi as ca
+    if isinstance(value, (ca.SX, ca.MX)):
+        return None  # symbolic: bounds are IPOPT's business
+    if isinstance(value, (list, tuple)) and any(isinstance(v, (ca.SX, ca.MX)) for v in value):
+        return None
     try:
         return np.asarray(value, dtype=float)
     except (TypeError, ValueError):
