@@ -246,3 +246,18 @@ def test_strip_outputs_and_geometry_for_the_wake():
     dcp = np.array(r["dCp"]).ravel()
     assert np.all(np.isfinite(dcp)) and dcp[0] > dcp[1]      # leading-edge row carries more load
     assert np.allclose(np.array(r["ccl_cref"]).ravel(), cl * c / float(g["c_ref"]))
+
+
+def test_flat_lattice_option():
+    """Twist and camber through the normals only (AVL's linearized condition): within 0.5 %
+    of the cambered, twisted lattice on the GA wing, and the influence matrix is twist-free."""
+    import casadi as ca
+    geo = VLM([_ga()], S_ref=14.76).solve(D(3), 70.0)
+    flat = VLM([_ga()], S_ref=14.76, flat_lattice=True).solve(D(3), 70.0)
+    for k in ("CL", "CDi", "Cm"):
+        assert float(flat[k]) == pytest.approx(float(geo[k]), rel=0.008)
+    tw = ca.MX.sym("tw")
+    w = trapezoid("w", 10.0, 1.2, 0.6, twist_tip=tw, airfoil="naca2412", nspan=6, nchord=2)
+    A = VLM([w], flat_lattice=True).A
+    assert not ca.depends_on(A, tw)
+    assert ca.depends_on(VLM([w]).A, tw)

@@ -39,8 +39,14 @@ def rotation_matrices(incidence, vertical: bool):
     return R, V
 
 
-def surface_half(s: Surface, p: Params) -> dict:
-    """SX lattice of the original half of surface ``s`` (see module doc)."""
+def surface_half(s: Surface, p: Params, flat: bool = False) -> dict:
+    """SX lattice of the original half of surface ``s`` (see module doc).
+
+    flat: the lattice lies on the untwisted chord surface (no twist rotation, no
+    camber offset); twist and camber enter only through the control-point
+    tangents (AVL's linearized boundary condition), so that the lattice, and the
+    influence matrix, do not depend on the twists.
+    """
     nm = s.name
     span = p(s.span, f"{nm}.span")
     c_root = p(s.root_chord, f"{nm}.root_chord")
@@ -86,6 +92,7 @@ def surface_half(s: Surface, p: Params) -> dict:
     sc_k = np.array([[cl.slope(x) for x in xi_c] for cl in cambers])
 
     # edge quantities
+    t0 = ca.DM([1.0, 0.0, 0.0])
     pts = {r: [] for r in range(nc + 1)}
     tans = {r: [] for r in range(nc)}
     le, chord_e = [], []
@@ -104,10 +111,14 @@ def surface_half(s: Surface, p: Params) -> dict:
         for r in range(nc):
             zb = mix(zb_k[:, r])
             sc = mix(sc_k[:, r])
-            pts[r].append(q + (xi_b[r] - 0.25) * c * t + c * zb * u)
+            if flat:
+                pts[r].append(q + (xi_b[r] - 0.25) * c * t0)
+            else:
+                pts[r].append(q + (xi_b[r] - 0.25) * c * t + c * zb * u)
             tans[r].append(t + sc * u)
-        pts[nc].append(q + 0.75 * c * t)
-        le.append(q - 0.25 * c * t)
+        tg = t0 if flat else t
+        pts[nc].append(q + 0.75 * c * tg)
+        le.append(q - 0.25 * c * tg)
         chord_e.append(c)
 
     R, V = rotation_matrices(incidence, s.vertical)
@@ -134,10 +145,12 @@ def surface_half(s: Surface, p: Params) -> dict:
             tan_cols.append(0.5 * (tans[r][si] + tans[r][si + 1]))
     cp = to_global(cp_cols)
     tangent = ca.mtimes(RV, ca.horzcat(*tan_cols))
+    tangent0 = ca.mtimes(RV, ca.repmat(t0, 1, len(tan_cols)))
     return {
         "nodes": nodes,
         "cp": cp,
         "tangent": tangent,
+        "tangent0": tangent0,
         "le": to_global(le),
         "edge_chord": ca.horzcat(*chord_e),
         "edge_eta": ca.horzcat(*[ca.SX(e) for e in edges]),

@@ -183,7 +183,8 @@ class VLM:
 
     def __init__(self, surfaces, *, symmetric: bool | None = None, mach_ref: float = 0.0,
                  lift_velocity: str = "local", S_ref=None, c_ref=None, b_ref=None,
-                 r_ref=(0.0, 0.0, 0.0), trefftz: str = "linear", near_field: bool = False):
+                 r_ref=(0.0, 0.0, 0.0), trefftz: str = "linear", near_field: bool = False,
+                 flat_lattice: bool = False):
         if isinstance(surfaces, Surface):
             surfaces = [surfaces]
         self.surfaces = list(surfaces)
@@ -203,6 +204,7 @@ class VLM:
         self.trefftz = trefftz
         self.trefftz_band = 6
         self.near_field = bool(near_field)
+        self.flat_lattice = bool(flat_lattice)
         if symmetric is None:
             symmetric = all(s.mirrored for s in self.surfaces)
         self.symmetric = bool(symmetric)
@@ -226,7 +228,7 @@ class VLM:
     def _build_halves(self, p: Params):
         halves = []
         for si, s in enumerate(self.surfaces):
-            h = surface_half(s, p)
+            h = surface_half(s, p, flat=self.flat_lattice)
             in_plane = not s.mirrored
             if self.symmetric and in_plane:
                 if not s.vertical:
@@ -244,6 +246,7 @@ class VLM:
                 img["nodes"] = [ca.mtimes(Mi, X) for X in h["nodes"]]
                 img["cp"] = ca.mtimes(Mi, h["cp"])
                 img["tangent"] = ca.mtimes(Mi, h["tangent"])
+                img["tangent0"] = ca.mtimes(Mi, h["tangent0"])
                 img["le"] = ca.mtimes(Mi, h["le"])
                 halves.append(dict(img, surface=si, image=True, unknown=not self.symmetric))
         self.halves = halves
@@ -268,7 +271,7 @@ class VLM:
         fA, fB, fcore, sA, score = [], [], [], [], []
         MF_rows, MF_cols, MF_vals = [], [], []
         MS_rows, MS_cols, MS_vals = [], [], []
-        cp, nrm, rb, lb, area = [], [], [], [], []
+        cp, nrm, nrm0, rb, lb, area = [], [], [], [], [], []
         st_chord, st_width, st_nrm, st_mid, st_y = [], [], [], [], []
         tz_edge, tz_core, tz_mid, tz_nds = [], [], [], []
         TS_rows, TS_cols, TE_rows, TE_cols, TE_vals = [], [], [], [], []
@@ -363,6 +366,8 @@ class VLM:
                     t = h["tangent"][:, si * nc + r]
                     n_ = ca.cross(t, lvec)
                     nrm.append(n_ / ca.norm_2(n_))
+                    n0 = ca.cross(h["tangent0"][:, si * nc + r], lvec)
+                    nrm0.append(n0 / ca.norm_2(n0))
                     cp.append(h["cp"][:, si * nc + r])
                     rb.append(0.5 * (a + b))
                     lb.append(lvec)
@@ -405,7 +410,7 @@ class VLM:
         self.TC = ca.DM.triplet(TC_rows, TC_cols, ca.DM(TC_vals), len(tzc_a), n_tz_strips)
 
         outs = {
-            "cp": ca.horzcat(*cp), "normal": ca.horzcat(*nrm),
+            "cp": ca.horzcat(*cp), "normal": ca.horzcat(*nrm), "normal_lattice": ca.horzcat(*nrm0),
             "fA": ca.horzcat(*fA), "fB": ca.horzcat(*fB), "fcore": ca.horzcat(*fcore),
             "sA": ca.horzcat(*sA), "score": ca.horzcat(*score),
             "rb": ca.horzcat(*rb), "lb": ca.horzcat(*lb), "area": ca.horzcat(*area),
@@ -427,7 +432,9 @@ class VLM:
         b = self.beta_ref
         stretch = ca.DM(np.diag([1.0 / b, 1.0, 1.0]))
         P = ca.mtimes(stretch, g["cp"])
-        Nn = ca.mtimes(stretch, g["normal"])     # n . (v'_x / beta, v'_y, v'_z)
+        # n . (v'_x / beta, v'_y, v'_z); a flat lattice uses its own (untwisted) normals here and
+        # the twisted/cambered ones only in the right-hand side (linearized boundary condition)
+        Nn = ca.mtimes(stretch, g["normal_lattice"] if self.flat_lattice else g["normal"])
         N = self.n_panels
         seg = _segment_column(N).map("seg_map", "serial", self.n_finite, [0, 1], [])
         semi = _semi_column(N).map("semi_map", "serial", self.n_semi, [0, 1], [])
