@@ -123,6 +123,10 @@ def main():
     h = ca.Function("h", [a, r, m], [ca.hessian(cl + 10 * cd, x)[0]])
     print(f"SX per-station Jacobian (3x3): {j.n_instructions()} instructions; "
           f"Hessian (3x3): {h.n_instructions()} instructions")
+    for label, fn in (("per-station Jacobian 3x3", j.map(n)), ("per-station Hessian 3x3", h.map(n))):
+        fn(A, R, M)
+        t = timeit(lambda: fn(A, R, M), args.repeats)
+        print(f"casadi mapped {label:26s}  {t * 1e3:8.2f} ms")
 
     print("\nAttached-flow fit only, (alpha, ln Re) -> (cl, ln cd, cm):")
     f_sx = attached_sx(af)

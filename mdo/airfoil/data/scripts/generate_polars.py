@@ -46,7 +46,9 @@ RE_FULL = [2e4, 5e4, 1e5, 2e5, 5e5, 1e6, 2e6, 5e6, 1e7]
 
 # prefix -> (geometry source, Reynolds numbers to generate)
 JOBS = {
-    "E63": (("file", "E63.txt"), RE_FULL),
+    # E63 at 5e6 and 1e7: XFOIL converged no point below -4.5 / -1 deg (the thin
+    # sharp nose separates), too little for a polar; those levels are not generated
+    "E63": (("file", "E63.txt"), RE_FULL[:7]),
     "NACA_0015": (("naca", "0015"), RE_FULL),
     # extend SUAVE's sets (XFOIL 6.96, Re 5e4..1e6 or 7.5e6) to the project's range
     "NACA_4412": (("naca", "4412"), [2e4, 1e7]),
