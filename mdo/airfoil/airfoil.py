@@ -66,7 +66,7 @@ class Airfoil:
 
     # ------------------------------------------------------------------ evaluation
     def coefficients(self, alpha_rad, reynolds, mach=0.0):
-        """``(cl, cd, cm)`` together (one evaluation of the shared bases)."""
+        """``(cl, cd, cm)`` together (one evaluation of the fitted surface and the blends)."""
         if any(isinstance(v, ca.MX) for v in (alpha_rad, reynolds, mach)):
             return self._call_mx(alpha_rad, reynolds, mach)
         if any(isinstance(v, ca.SX) for v in (alpha_rad, reynolds, mach)):
