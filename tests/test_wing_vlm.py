@@ -261,3 +261,14 @@ def test_flat_lattice_option():
     A = VLM([w], flat_lattice=True).A
     assert not ca.depends_on(A, tw)
     assert ca.depends_on(VLM([w]).A, tw)
+
+
+def test_outline_for_plots():
+    from mdo.wing.validation import avl_wing_tail
+    out = VLM(avl_wing_tail(), symmetric=False).outline()
+    assert [(o["surface"], o["image"]) for o in out] == [("wing", False), ("wing", True), ("htail", False),
+                                                         ("htail", True), ("vtail", False)]
+    tip = np.array(out[0]["le"])[:, -1]
+    assert np.allclose(tip, [0.2, 5.0, 1.0], atol=0.006)   # wing tip LE (AVL input; 2 deg twist about c/4)
+    fin_tip = np.array(out[4]["le"])[:, -1]
+    assert np.allclose(fin_tip, [4.14, 0.0, 1.0], atol=1e-12)

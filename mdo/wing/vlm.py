@@ -568,6 +568,27 @@ class VLM:
         return (-0.25 / math.pi) * ca.mtimes(ca.mtimes(self.TC.T, J), self.TC)
 
     # --- public ------------------------------------------------------------------------------
+    def outline(self) -> list[dict]:
+        """Leading- and trailing-edge points (3 x E each) of every surface half, for plots.
+
+        One dict per half (images included): ``surface`` (name), ``image`` (bool),
+        ``le``, ``te`` (DM for numeric designs, MX otherwise) and ``nodes`` (the
+        bound-vortex rows, list of 3 x E).
+        """
+        if not hasattr(self, "_outline_fn"):
+            outs = []
+            for h in self.halves:
+                outs += [h["le"], h["nodes"][-1]] + list(h["nodes"][:-1])
+            self._outline_fn = ca.Function("vlm_outline", [self.params.sx], outs)
+        vals = self._outline_fn.call([self.params.value_vector()])
+        res, k = [], 0
+        for h in self.halves:
+            nc = h["nc"]
+            res.append({"surface": self.surfaces[h["surface"]].name, "image": h["image"],
+                        "le": vals[k], "te": vals[k + 1], "nodes": vals[k + 2:k + 2 + nc]})
+            k += 2 + nc
+        return res
+
     @property
     def geometry(self) -> dict:
         """Geometric arrays (DM for numeric designs, MX otherwise): cp, normal, strip data, refs."""
