@@ -81,3 +81,12 @@ def test_profile_drag_of_the_ga_wing():
     blown = v.solve(D(3.0), 78.0, rho=0.96, v_ext=(np.full((N, 1), 20.0), np.zeros((N, 1)), np.zeros((N, 1))))
     pdb = profile_drag(v, blown, 0.96, 1.7e-5)
     assert float(pdb["D_p"]) > float(np.array(pd["D_p"]).ravel()[1])
+
+
+def test_section_cd_broadcasts_scalars_and_sx():
+    c = ca.MX.sym("c", 3)
+    got = ca.Function("f", [c], [section_cd("naca4412", c, 1e6)])([0.1, 0.5, 0.9])
+    assert np.allclose(np.array(got).ravel(), section_cd("naca4412", np.array([0.1, 0.5, 0.9]), np.full(3, 1e6)))
+    r = ca.SX.sym("r", 1, 3)
+    got = ca.Function("g", [r], [section_cd("naca4412", 0.5, r)])([1e5, 1e6, 1e7])
+    assert got.shape == (1, 3) and float(got[0]) > float(got[2])   # lower Re, more drag

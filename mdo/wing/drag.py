@@ -139,13 +139,14 @@ def section_cd(airfoil, cl, reynolds, mach=0.0, thickness_to_chord=0.12):
         return skin_friction(re_s, m) * form_factor_wing(thickness_to_chord, 0.3, m) * \
             (1.977 + 0.52 * thickness_to_chord)
     f = section_drag_table(airfoil)
-    if is_symbolic(cl, reynolds):
-        cl_ = cl if isinstance(cl, (ca.MX, ca.SX)) else ca.DM(np.asarray(cl, dtype=float))
-        lre = ca.log(re_s)
-        shape = cl_.shape if cl_.numel() >= (lre.numel() if hasattr(lre, "numel") else 1) else lre.shape
-        n = max(cl_.numel(), lre.numel() if hasattr(lre, "numel") else 1)
-        c = ca.repmat(ca.vec(cl_), n // cl_.numel(), 1) if cl_.numel() != n else ca.vec(cl_)
-        r = ca.repmat(ca.vec(lre), n // lre.numel(), 1) if lre.numel() != n else ca.vec(lre)
+    if isinstance(cl, (ca.MX, ca.SX)) or isinstance(reynolds, (ca.MX, ca.SX)):
+        kind = ca.MX if ca.MX in (type(cl), type(reynolds)) else ca.SX
+        cl_ = cl if isinstance(cl, kind) else kind(ca.DM(np.asarray(cl, dtype=float)))
+        lre = ca.log(re_s if isinstance(re_s, kind) else kind(ca.DM(np.asarray(re_s, dtype=float))))
+        n = max(cl_.numel(), lre.numel())
+        shape = cl_.shape if cl_.numel() == n else lre.shape
+        c = ca.vec(cl_) if cl_.numel() == n else ca.repmat(cl_, n, 1)
+        r = ca.vec(lre) if lre.numel() == n else ca.repmat(lre, n, 1)
         out = f.map(n)(ca.vertcat(c.T, r.T)) if n > 1 else f(ca.vertcat(c, r))
         return ca.reshape(out, *shape)
     cl_a = np.asarray(cl, dtype=float)
