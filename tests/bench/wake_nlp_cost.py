@@ -32,19 +32,22 @@ from mdo.wake.helical import full_wake_function
 
 
 def timeit(fn, repeats):
-    ts = []
+    """Median wall time and median CPU time (s) of ``repeats`` calls (the machine is
+    shared: CPU time is the steadier figure)."""
+    ts, cs = [], []
     for _ in range(repeats):
-        t0 = time.perf_counter()
+        t0, c0 = time.perf_counter(), time.process_time()
         fn()
         ts.append(time.perf_counter() - t0)
-    return statistics.median(ts)
+        cs.append(time.process_time() - c0)
+    return statistics.median(ts), statistics.median(cs)
 
 
-def wing_points(n_span=40, n_chord=4, semispan=5.7, c_root=1.523, c_tip=1.066):
+def wing_points(n_span=40, n_chord=4, semispan=5.7, c_root=1.523, c_tip=1.066, sides=(1, -1)):
     ys = (1 - np.cos(np.linspace(0, np.pi / 2, n_span + 1))) * semispan
     ym = 0.5 * (ys[1:] + ys[:-1])
     pts = []
-    for side in (1, -1):
+    for side in sides:
         for y in ym:
             c = c_root + (c_tip - c_root) * y / semispan
             for j in range(n_chord):
@@ -94,19 +97,24 @@ def main(argv=None):
     ap.add_argument("--nodes", type=int, default=100)
     ap.add_argument("--full-nodes", type=int, default=1)
     ap.add_argument("--repeats", type=int, default=5)
+    ap.add_argument("--skip-full", action="store_true")
     args = ap.parse_args(argv)
-    pts = wing_points()
-    print(f"control points M = {pts.shape[1]}, rotors 2 x (3 blades, 20 elements)")
-    for kind, k in (("mean", args.nodes), ("full", args.full_nodes)):
+    runs = [("mean", args.nodes, wing_points(sides=(1,)), "right half, symmetric VLM"),
+            ("mean", args.nodes, wing_points(), "both halves")]
+    if not args.skip_full:
+        runs.append(("full", args.full_nodes, wing_points(), "both halves"))
+    print("rotors 2 x (3 blades, 20 elements); times: median wall (median CPU)")
+    for kind, k, pts, label in runs:
         t0 = time.perf_counter()
         f, g, h, z0, nnz = build(kind, k, pts)
         t_build = time.perf_counter() - t0
         tf = timeit(lambda: f(z0), args.repeats)
         tg = timeit(lambda: g(z0), args.repeats)
         th = timeit(lambda: h(z0), max(1, args.repeats // 2))
-        print(f"{kind:5s} K = {k:4d}: build {t_build:6.2f} s | value {tf * 1e3:9.2f} ms "
-              f"({tf / k * 1e3:8.3f} ms/node) | gradient {tg * 1e3:9.2f} ms ({tg / k * 1e3:8.3f} ms/node) | "
-              f"Hessian {th * 1e3:9.1f} ms ({th / k * 1e3:8.2f} ms/node), nnz {nnz}")
+        print(f"{kind:5s} M = {pts.shape[1]:3d} ({label}), K = {k:3d}: build {t_build:5.1f} s | "
+              f"value {tf[0] * 1e3:8.1f} ({tf[1] * 1e3:8.1f}) ms | gradient {tg[0] * 1e3:8.1f} ({tg[1] * 1e3:8.1f}) ms | "
+              f"Hessian {th[0] * 1e3:9.1f} ({th[1] * 1e3:9.1f}) ms, nnz {nnz}; per node: value "
+              f"{tf[1] / k * 1e3:.3f} ms, Hessian {th[1] / k * 1e3:.2f} ms CPU")
 
 
 if __name__ == "__main__":
