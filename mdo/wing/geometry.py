@@ -294,8 +294,8 @@ def mean_aerodynamic_chord(s: Surface):
 
 
 def aspect_ratio(s: Surface):
-    b = s.span if s.mirrored else s.span
-    return b * b / planform_area(s) * (1 if s.mirrored else 1)
+    """span^2 / planform area (for an unmirrored fin: height^2 / area)."""
+    return s.span * s.span / planform_area(s)
 
 
 # --- parameters: numbers stay constants, expressions become inputs ---------------------

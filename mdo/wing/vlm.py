@@ -533,6 +533,12 @@ class VLM:
         underestimates D_i by about 0.6/n (e = 1.019 at 32 strips).
         """
         scheme = scheme or self.trefftz
+        cache = self.__dict__.setdefault("_trefftz_cache", {})
+        if scheme not in cache:   # one graph per instance, however often solve() is called
+            cache[scheme] = self._trefftz_matrix(scheme)
+        return cache[scheme]
+
+    def _trefftz_matrix(self, scheme):
         g = self._geo
         if scheme == "midpoint":
             col = _trefftz_column(self.n_tz_strips).map("tz_map", "serial", self.n_tz_edges, [0, 1], [])
