@@ -174,6 +174,10 @@ def solve_case(vlm, alpha_rad, fs, rotor_list=None, state=None, model="full", ph
     return strip_cn(vlm, out), out
 
 
+def _f(x, fmt="{:.5f}"):
+    return "" if not np.isfinite(x) else fmt.format(x)
+
+
 def rms_against(y_model, cn_model, data):
     pred = np.interp(data[:, 0], y_model, cn_model)
     return float(np.sqrt(np.mean((pred - data[:, 1]) ** 2)))
@@ -245,7 +249,7 @@ def run(out_dir, nspan=48, nchord=6, phases=8, pitch_deg=PITCH_DEG, sensitivity=
                    + [f"rms_inboard_up_{m}" for m in labels])
         for r in summary:
             w.writerow([r["alpha_deg"], r["pitch_deg"], f"{r['CT']:.5f}", f"{r['thrust_N']:.3f}",
-                        f"{r['rms_props_off']:.5f}"] + [f"{r['rms_inboard_up_' + m]:.5f}" for m in labels])
+                        _f(r["rms_props_off"])] + [_f(r["rms_inboard_up_" + m]) for m in labels])
         for p, ct, r in sens:
             w.writerow([4.0, p, f"{ct:.5f}", "", ""] + ["" if m != "mean" else f"{r:.5f}" for m in labels])
     return summary, sens
