@@ -8,6 +8,7 @@ rotor_frame, spin_for              frames and rotation sense (frames.py)
 filament_velocity, ring_velocity   Biot–Savart kernels, Eqs. 2 and 4 (biot_savart.py)
 full_wake_velocity                 the helical fixed wake, symbolic (helical.py)
 mean_wake_velocity, influence      the averaged wake from the shipped table (mean.py)
+external_velocity, vlm_wake_inputs the coupling into the wing's VLM (coupling.py)
 """
 from .biot_savart import filament_kernel, filament_velocity, ring_kernel, ring_velocity
 from .frames import rotor_frame, spin_for
@@ -22,6 +23,8 @@ __all__ = [
     "full_wake_function", "full_wake_velocity", "wake_segments_function",
     "apply_influence", "influence", "influence_function", "jump_matrix", "mean_wake_velocity", "unit_cylinder",
 ]
-from .coupling import apply_influences, external_velocity, wake_convection_speed, wake_influences
+from .coupling import (COUPLINGS, apply_influences, external_velocity, vlm_wake_inputs,
+                       wake_convection_speed, wake_influences)
 
-__all__ += ["apply_influences", "external_velocity", "wake_convection_speed", "wake_influences"]
+__all__ += ["COUPLINGS", "apply_influences", "external_velocity", "vlm_wake_inputs",
+            "wake_convection_speed", "wake_influences"]

@@ -148,3 +148,45 @@ def external_velocity(points, rotors, gamma, omega_radps, v_wake_mps, *, model: 
     if isinstance(u, ca.DM):
         return np.array(vx), np.array(vy), np.array(vz)
     return vx, vy, vz
+
+
+# Force couplings measured on PROWIM and the rotation studies (README "Coupling"):
+# name -> (the VLM's lift_velocity, axial factor of the wake velocity at the bound vortices)
+COUPLINGS = {
+    "swirl": ("local", 0.0),            # forces ⊥ V∞ + swirl/radial wake velocity, freestream q (default)
+    "freestream": ("freestream", 1.0),  # the paper's code: forces with V∞ only
+    "local": ("local", 1.0),            # forces with the full local velocity (slipstream q)
+}
+
+
+def vlm_wake_inputs(vlm, rotors, gamma, omega_radps, v_wake_mps, *, coupling: str = "swirl",
+                    model: str = "mean", bound_points: str = "rb", influences=None, **full_options):
+    """Keyword arguments ``v_ext`` and ``v_ext_bound`` for ``vlm.solve`` (duck-typed: any
+    object whose ``geometry`` dict has control points ``cp`` and bound midpoints ``rb``).
+
+    ``coupling`` picks the force model (``COUPLINGS``; build the VLM with
+    ``lift_velocity=COUPLINGS[coupling][0]``).  ``bound_points="rb"`` evaluates the wake
+    at the bound-vortex midpoints; ``"cp"`` reuses the control-point influence (half the
+    table look-ups in an NLP; the points are half a panel chord apart).
+    ``influences``: optional (cp_influences, rb_influences) from :func:`wake_influences`
+    to reuse per-design factors (model "mean").  ``full_options`` go to the full wake.
+    """
+    if coupling not in COUPLINGS:
+        raise InputError("coupling", f"one of {tuple(COUPLINGS)}, got {coupling!r}")
+    if bound_points not in ("rb", "cp"):
+        raise InputError("bound_points", f"'rb' or 'cp', got {bound_points!r}")
+    lv, k_ax = COUPLINGS[coupling]
+    if getattr(vlm, "lift_velocity", lv) != lv:
+        raise InputError("coupling", f"coupling {coupling!r} needs VLM(lift_velocity={lv!r}), "
+                                     f"the VLM has {vlm.lift_velocity!r}")
+    g = vlm.geometry
+    cp = g["cp"]
+    rb = g["rb"] if bound_points == "rb" else cp
+    infl_cp, infl_rb = (influences if influences is not None else (None, None))
+    if model == "mean" and infl_cp is None:
+        infl_cp = wake_influences(cp, rotors)
+        infl_rb = infl_cp if bound_points == "cp" else wake_influences(rb, rotors)
+    args = (rotors, gamma, omega_radps, v_wake_mps)
+    v_cp = external_velocity(cp, *args, model=model, influences=infl_cp, **full_options)
+    v_rb = external_velocity(rb, *args, model=model, influences=infl_rb, axial_factor=k_ax, **full_options)
+    return {"v_ext": v_cp, "v_ext_bound": v_rb}

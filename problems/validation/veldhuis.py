@@ -141,11 +141,7 @@ def strip_cn(vlm, out):
     return y[order] / SEMISPAN, (fn / cw)[order]
 
 
-COUPLINGS = {   # name -> (VLM lift_velocity, axial factor of the wake velocity at the bound vortices)
-    "swirl": ("local", 0.0),             # forces with V_inf + swirl/radial wake velocity, freestream q
-    "freestream": ("freestream", 1.0),   # the paper's code: forces with V_inf only
-    "local": ("local", 1.0),             # forces with the full local velocity (slipstream q)
-}
+COUPLINGS = wake.COUPLINGS   # "swirl" (primary), "freestream" (the paper's code), "local"
 # (label, wake model, phases, coupling) of every props-on variant computed
 VARIANTS = (
     ("full", "full", None, "swirl"),
@@ -157,19 +153,12 @@ VARIANTS = (
 
 
 def solve_case(vlm, alpha_rad, fs, rotor_list=None, state=None, model="full", phases=8, coupling="swirl"):
-    g = vlm.geometry
-    cp = np.array(g["cp"])
-    rb = np.array(g["rb"])
     kw = {}
     if rotor_list is not None:
         k = len(rotor_list)
-        args = (rotor_list, [state["gamma"]] * k, [state["omega"]] * k, [state["v_wake"]] * k)
-        opts = dict(model=model)
-        if model == "full":
-            opts.update(phases=phases)
-        vc = wake.external_velocity(cp, *args, **opts)
-        vb = wake.external_velocity(rb, *args, axial_factor=COUPLINGS[coupling][1], **opts)
-        kw = dict(v_ext=vc, v_ext_bound=vb)
+        opts = dict(phases=phases) if model == "full" else {}
+        kw = wake.vlm_wake_inputs(vlm, rotor_list, [state["gamma"]] * k, [state["omega"]] * k,
+                                  [state["v_wake"]] * k, coupling=coupling, model=model, **opts)
     out = vlm.solve(alpha_rad, fs["V"], rho=fs["rho"], mach=MACH, **kw)
     return strip_cn(vlm, out), out
 

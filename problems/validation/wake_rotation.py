@@ -229,26 +229,17 @@ def wake_rotors(veh: Vehicle, geom, senses):
     return out
 
 
-COUPLINGS = {   # name -> (VLM lift_velocity, axial factor of the wake velocity at the bound vortices)
-    "swirl": ("local", 0.0),          # forces with V_inf + swirl/radial wake velocity, freestream q
-    "freestream": ("freestream", 1.0),  # the paper's code: forces with V_inf only
-    "local": ("local", 1.0),          # forces with the full local velocity (slipstream q)
-}
+COUPLINGS = wake.COUPLINGS   # "swirl" (default), "freestream" (the paper's code), "local"
 
 
 def solve(vlm, rotors, state, at, model="mean", phases=8, coupling="swirl"):
-    g = vlm.geometry
-    cp, rb = np.array(g["cp"]), np.array(g["rb"])
     a = math.radians(ALPHA_DEG)
     kw = {}
     if rotors:
-        n = cp.shape[1]
         k = len(rotors)
-        opts = dict(model=model, phases=phases) if model == "full" else dict(model="mean")
-        args = (rotors, [state["gamma"]] * k, [state["omega"]] * k, [state["v_wake"]] * k)
-        vc = wake.external_velocity(cp, *args, **opts)
-        vb = wake.external_velocity(rb, *args, axial_factor=COUPLINGS[coupling][1], **opts)
-        kw = dict(v_ext=vc, v_ext_bound=vb)
+        opts = dict(phases=phases) if model == "full" else {}
+        kw = wake.vlm_wake_inputs(vlm, rotors, [state["gamma"]] * k, [state["omega"]] * k,
+                                  [state["v_wake"]] * k, coupling=coupling, model=model, **opts)
     out = vlm.solve(a, V_MPS, rho=at["rho"], mach=V_MPS / at["a"], **kw)
     pdrag = profile_drag(vlm, out, at["rho"], at["mu"], V_MPS / at["a"])
     return out, float(np.ravel(np.array(pdrag["CD_p"]))[0])
