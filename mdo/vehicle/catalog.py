@@ -61,10 +61,10 @@ def _ga_airframe():
                       twist_deg=(3.00, 2.75, 2.50, 2.25, 2.00), airfoil="NACA_63_412",
                       thickness_to_chord=0.12, root_le_x_m=2.93, root_z_m=1.01)
     htail = WingConfig("horizontal_tail", span_m=3.3, area_m2=2.54, taper=1.0, section_eta=(0.0, 1.0),
-                       twist_deg=(0.0, 0.0), airfoil="NACA_0012", thickness_to_chord=0.12,
+                       twist_deg=(0.0, 0.0), airfoil="NACA_0015", thickness_to_chord=0.12,
                        root_le_x_m=7.7, root_z_m=0.25)
     vtail = WingConfig("vertical_tail", span_m=1.854, area_m2=2.258, taper=0.6858 / 1.6764,
-                       section_eta=(0.0, 1.0), twist_deg=(0.0, 0.0), airfoil="NACA_0012",
+                       section_eta=(0.0, 1.0), twist_deg=(0.0, 0.0), airfoil="NACA_0015",
                        thickness_to_chord=0.12, sweep_quarter_chord_deg=25.0, root_le_x_m=6.75,
                        root_z_m=0.623, vertical=True)
     fuselage = FuselageConfig(length_m=8.28, width_m=42 * u.INCH, height_m=62 * u.INCH,
@@ -117,7 +117,7 @@ def ttw(rotation: str = "inboard_up") -> VehicleConfig:
                       twist_deg=(4.0, 3.0, 2.0, 1.0, 0.0), airfoil="NACA_63_412",
                       thickness_to_chord=0.12, root_le_x_m=4.6, root_z_m=1.6, tilting=True)
     fin = WingConfig("vertical_tail", span_m=1.2, area_m2=1.2, taper=0.6, section_eta=(0.0, 1.0),
-                     twist_deg=(0.0, 0.0), airfoil="NACA_0012", thickness_to_chord=0.12,
+                     twist_deg=(0.0, 0.0), airfoil="NACA_0015", thickness_to_chord=0.12,
                      sweep_quarter_chord_deg=25.0, root_le_x_m=4.9, root_z_m=1.0, vertical=True)
     rotors = RotorGroupConfig(
         "rotors", wings=("main_wing", "tandem_wing"), span_eta=(0.38, 1.0), blades=3, radius_m=1.2,

@@ -1,0 +1,32 @@
+"""GA-2P: the X-57 Mod II airframe with two propellers, optimized over the GA profile (Eq. 7).
+
+``mdo run problems/ga2p.py`` minimizes the battery energy used over the GA profile of
+Table 5 with respect to the Adkins-Liebeck inputs of the propellers (design thrust,
+design speed, tip radius, design cl), the main wing's span, taper and five section
+twists at constant reference area, and the propellers' span position, subject to the
+design-point tip Mach <= 0.6, disk clearance and the mission itself, in one IPOPT
+solve.  ``--analysis`` freezes the design at Table 3's initial values.
+
+Options (``-o KEY=VALUE``): ``nodes`` per segment (6), ``cruise_distance_nmi`` (50),
+``reserve_cruise_distance_nmi`` (5), ``n_stations`` (16), ``wing_strips`` (20),
+``mass_model`` ("buildup" or "fixed"), ``rotation`` ("inboard_up").
+"""
+from mdo.core.units import KWH, NMI
+from mdo.mission.profiles import ga_mission
+from mdo.nlp import Problem
+from mdo.vehicle.aircraft import Aircraft
+from mdo.vehicle.catalog import ga2p
+from mdo.vehicle.reports import add_vehicle_reports
+
+
+def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 50.0,
+          reserve_cruise_distance_nmi: float = 5.0, n_stations: int = 16, wing_strips: int = 20,
+          mass_model: str = "buildup", rotation: str = "inboard_up"):
+    p = Problem("ga2p", "GA-2P whole-mission optimization (Clarke et al. Eq. 7)")
+    vehicle = Aircraft(ga2p(rotation), n_stations=n_stations, wing_strips=wing_strips, mass_model=mass_model)
+    mission = ga_mission(vehicle, nodes=nodes, cruise_distance_m=cruise_distance_nmi * NMI,
+                         reserve_cruise_distance_m=reserve_cruise_distance_nmi * NMI).build(p)
+    p.minimize(mission.energy_used_J / KWH, unit="kWh", scale=10.0, name="battery energy used")
+    p.add_report(mission.report)
+    add_vehicle_reports(p, vehicle, mission)
+    return p
