@@ -260,6 +260,22 @@ class Problem:
             used.append(v.name)
         return used
 
+    def initial_violations(self, top: int | None = None) -> list:
+        """Each constraint group's worst scaled violation at the initial guess
+        (name, kind, scaled, value in group units, where), worst first: what a
+        continuation stage must fix before IPOPT starts."""
+        init = self.opti.initial()
+        out = []
+        for grp in self.groups.values():
+            r = np.asarray(self.opti.debug.value(grp.residual, init), float).ravel()
+            viol = np.abs(r) if grp.kind == "==" else (np.maximum(r, 0) if grp.kind == "<=" else np.maximum(-r, 0))
+            viol = np.where(np.isfinite(viol), viol, np.inf)
+            i = int(np.argmax(viol))
+            out.append({"group": grp.name, "kind": grp.kind, "scaled": float(viol[i]),
+                        "max_violation": float(viol[i] * grp.scale), "unit": grp.unit, "where": grp.labels[i]})
+        out.sort(key=lambda d: -d["scaled"])
+        return out[:top] if top else out
+
     # ------------------------------------------------------------------ size
     def size(self) -> dict:
         nx = sum(v.size for v in self.variables.values())

@@ -82,6 +82,13 @@ def _num(x) -> np.ndarray:
     return np.asarray(ca.DM(x), dtype=float)
 
 
+def _cols(v, idx, K):
+    """Columns ``idx`` of a 1 x K row (or a scalar)."""
+    if isinstance(v, (ca.MX, ca.SX, ca.DM)) and v.shape[1] == K and K > 1:
+        return v[:, list(idx)]
+    return v
+
+
 class Aircraft:
     """A configuration of ``mdo.vehicle.catalog`` flying a mission (see module docstring).
 
@@ -105,7 +112,10 @@ class Aircraft:
                  n_azimuth: int | None = None, wing_strips: int = 20, tail_strips: int = 6, nchord: int = 1,
                  coupling: str = "swirl", mass_model: str = "buildup", powertrain_limits: bool = False,
                  misc_drag_fraction: float = 0.05, bounds: DesignBounds | None = None,
-                 positions_free: bool | None = None):
+                 positions_free: bool | None = None, design_point_constraints: bool = True,
+                 wing_stall: bool | None = None):
+        """See the class docstring; ``design_point_constraints=False`` leaves out the
+        tip-Mach and disk-clearance constraints (analysis of a violating design)."""
         if coupling not in ("swirl", "freestream", "local"):
             raise InputError("coupling", f"'swirl', 'freestream' or 'local', got {coupling!r}")
         if mass_model not in ("buildup", "fixed"):
@@ -126,6 +136,10 @@ class Aircraft:
         self.coupling = coupling
         self.mass_model = mass_model
         self.powertrain_limits = bool(powertrain_limits)
+        # post-stall strips (tilt-wing transitions); the linear lattice elsewhere
+        self.wing_stall = (config.kind == "tilt_wing") if wing_stall is None else bool(wing_stall)
+        # tip Mach and disk clearance; off for the analysis of a design that violates them (GA-8P)
+        self.design_point_constraints = bool(design_point_constraints)
         self.misc_drag_fraction = float(misc_drag_fraction)
         self.bounds = bounds or DesignBounds()
         self.parameters = {"wing_mounted_angle_rad": 0.0, "pitch_command_rad": 0.0}
@@ -220,14 +234,16 @@ class Aircraft:
         # tip Mach at the design point (Eq. 7: M_tip <= M_max), design rpm fixed per vehicle
         a_d = float(atm_d["speed_of_sound_mps"])
         tip2 = (self.omega_design * d["R"]) ** 2 + d["V_design"] ** 2
-        problem.constrain(f"{p} tip Mach", tip2 / (g.tip_mach_max * a_d) ** 2, kind="<=", rhs=1.0, scale=1.0,
-                          unit="-", labels=[f"{p} design point"])
+        if self.design_point_constraints:
+            problem.constrain(f"{p} tip Mach", tip2 / (g.tip_mach_max * a_d) ** 2, kind="<=", rhs=1.0,
+                              scale=1.0, unit="-", labels=[f"{p} design point"])
         self.tip_mach_design = ca.sqrt(tip2) / a_d
         problem.output(f"{p}.tip_mach_design", self.tip_mach_design, unit="-", summary=True)
 
         # --- geometry: wings, rotor placements, lattice, wakes
         self._build_geometry(problem, d)
-        self._no_overlap(problem, d)
+        if self.design_point_constraints:
+            self._no_overlap(problem, d)
         # --- gross weight
         md = MassDesign({w: v["span"] for w, v in d["wings"].items()},
                         {w: v["taper"] for w, v in d["wings"].items()}, {p: d["R"]})
@@ -390,10 +406,7 @@ class Aircraft:
         phi = unknowns[f"{g.name}.phi"]
         ib = unknowns["battery_current_A"]
         # --- rotors (one BEMT, all rotors of the group alike)
-        bm = self.bemt.map(K)(radius_m=d["R"], hub_fraction=g.hub_fraction, blades=g.blades,
-                              chord_m=self.blade["chord_m"], twist_rad=self.blade["twist_rad"], pitch_rad=pitch,
-                              omega_radps=omega, v_axial_mps=v_ax, v_inplane_mps=v_ip, rho_kgpm3=rho,
-                              mu_Pas=mu, a_mps=a_s, spin=1.0, phi_rad=phi)
+        bm, extra_res = self._bemt_nodes(K, _num(wma).ravel(), d, pitch, omega, v_ax, v_ip, rho, mu, a_s, phi)
         n_rot = g.count
         T1, Q1, H1 = bm["thrust_N"], bm["torque_Nm"], bm["hforce_N"]
         # --- wake at the wing and the lattice
@@ -409,6 +422,7 @@ class Aircraft:
         r = self.vlm.solve(wing_alpha, V, rho=rho, mach=mach, v_ext=v_cp, v_ext_bound=v_b)
         # --- drag build-up
         pd = profile_drag(self.vlm, r, rho, mu, mach)
+        L_stall, D_stall = self.stall_correction(self.vlm, r, pd, rho, V) if self.wing_stall else (0.0, 0.0)
         D_bodies, _ = body_drag(self.bodies, V, rho, mu, mach)
         D_fin = 0.0
         q = 0.5 * rho * V * V
@@ -418,9 +432,9 @@ class Aircraft:
             ff = form_factor_wing(f.thickness_to_chord, mach=ca.sqrt(mach * mach + 1e-4),
                                   sweep_max_thickness=math.radians(f.sweep_quarter_chord_deg))
             D_fin = D_fin + q * cf * ff * 2.04 * f.area_m2
-        D_parasite = (pd["D_p"] + D_bodies + D_fin) * (1.0 + self.misc_drag_fraction)
+        D_parasite = (pd["D_p"] + D_stall + D_bodies + D_fin) * (1.0 + self.misc_drag_fraction)
         D = r["D_i"] + D_parasite
-        L = r["L"]
+        L = r["L"] + L_stall
         # --- forces in the path frame (x along the velocity, z normal)
         ca_r, sa_r = ca.cos(a_rot), ca.sin(a_rot)
         F_t = -D + n_rot * (T1 * ca_r - H1 * sa_r)
@@ -429,11 +443,15 @@ class Aircraft:
         soc = nodes.states["state_of_charge"]
         pt = self.powertrain
         po = pt.evaluate(Q1, omega, soc, ib)
-        residuals = [
-            ResidualGroup(f"{g.name} BEMT", bm["residual"], scale=1.0, unit="-",
-                          row_labels=[f"r{i} psi{j}" for j in range(self.n_azimuth) for i in range(self.n_stations)]),
-            ResidualGroup("power balance", po["power_balance_W"], scale=pt.power_scale_W, unit="W"),
-        ]
+        residuals = [ResidualGroup("power balance", po["power_balance_W"], scale=pt.power_scale_W, unit="W")]
+        if extra_res is None:
+            residuals.insert(0, ResidualGroup(
+                f"{g.name} BEMT", bm["residual"], scale=1.0, unit="-",
+                row_labels=[f"r{i} psi{j}" for j in range(self.n_azimuth) for i in range(self.n_stations)]))
+        else:   # azimuth-averaged and axial nodes have different row counts: added directly, own labels
+            for name, expr, cols, rows in extra_res:
+                labels = [f"{nodes.labels[k]} {r}" for k in cols for r in rows]
+                self._problem.constrain(f"{g.name} {name}", expr, scale=1.0, unit="-", labels=labels)
         if self.powertrain_limits:
             for lim in pt.limits(po):
                 residuals.append(ResidualGroup(lim["name"], lim["expr"] - lim["rhs"], scale=lim["scale"],
@@ -463,6 +481,103 @@ class Aircraft:
         return NodeEvaluation(mass_kg=self.togw, force_along_path_N=F_t, force_normal_N=F_n, residuals=residuals,
                               force_scale_N=self.togw_baseline_kg * G0,
                               state_derivatives={"state_of_charge": po["soc_rate_per_s"]}, outputs=out)
+
+    def stall_limits(self, airfoil: str) -> tuple:
+        """(alpha0, lift slope, cl_min, cl_max) of a section at Re 1e6 (numbers, cached)."""
+        cache = self.__dict__.setdefault("_stall_cache", {})
+        if airfoil not in cache:
+            from ..airfoil import Airfoil
+            af = Airfoil.from_name(airfoil)
+            a = np.radians(np.linspace(-30.0, 30.0, 601))
+            cl = np.asarray(af.cl(a, 1e6), float).ravel()
+            cache[airfoil] = (af, float(af.alpha0_rad), float(af.lift_slope_per_rad), float(cl[a < 0].min()),
+                              float(cl[a > 0].max()))
+        return cache[airfoil]
+
+    def stall_correction(self, vlm, r, pd, rho, V, width: float = 0.1):
+        """Lift and drag corrections (N, 1 x K) of strips past stall.
+
+        The lattice is linear: a strip at sectional cl beyond the section's cl_max
+        (or below cl_min) is read as a section at the equivalent attached angle
+        ``alpha_e = alpha_0 + cl/a`` (a: the section's lift slope) and given the
+        full-circle section coefficients there (``mdo.airfoil``: AERODAS/flat-plate
+        post-stall).  The switch is a logistic weight of width 0.1 in cl, so the
+        lattice is untouched below stall; in transition (the tilt-wing at 45 deg)
+        the wing then loses lift and gains pressure drag as a real wing does, instead
+        of the lattice's unbounded linear lift.
+        """
+        g = vlm.geometry
+        cl_loc = r["cl_local"]
+        K = cl_loc.shape[1]
+        Vl = r["V_local"]
+        c = g["strip_chord"].T
+        w = g["strip_width"].T
+        q_inf = 0.5 * rho * V * V
+        dL = 0.0
+        dD = 0.0
+        names = [str(a) for a in vlm.strip_airfoil]
+        for name in sorted(set(names)):
+            if name == "None":
+                continue
+            idx = [i for i, a in enumerate(names) if a == name]
+            af, a0, slope, cl_min, cl_max = self.stall_limits(name)
+            cl_i = cl_loc[idx, :]
+            alpha_e = a0 + cl_i / slope
+            cl_af, cd_af, _ = af.coefficients(alpha_e, pd["Re"][idx, :])
+            wgt = 0.5 * (1 + ca.tanh(0.5 * (cl_i - cl_max) / width)) + 0.5 * (1 + ca.tanh(0.5 * (cl_min - cl_i) / width))
+            q_loc = 0.5 * ca.repmat(rho, len(idx), 1) * Vl[idx, :] ** 2
+            area = ca.repmat(c[idx] * w[idx], 1, K)
+            dL = dL + ca.mtimes(ca.DM.ones(1, len(idx)), wgt * (cl_af - cl_i) * q_loc * area)
+            dD = dD + ca.mtimes(ca.DM.ones(1, len(idx)), wgt * (cd_af - pd["cd"][idx, :]) * q_loc * area)
+        factor = 2.0 if vlm.symmetric else 1.0
+        return factor * dL, factor * dD
+
+    def transition_nodes(self, wma) -> np.ndarray:
+        """Nodes whose rotors see in-plane flow worth azimuth averaging: a tilted wing
+        between cruise (0) and hover (90 deg).  Elsewhere the inflow is axial."""
+        wma = np.asarray(wma, float).ravel()
+        if self.n_azimuth == 1:
+            return np.zeros(wma.size, bool)
+        tilt_deg = np.degrees(wma)
+        return (np.abs(tilt_deg) > 1.0) & (np.abs(tilt_deg - 90.0) > 1.0)
+
+    def _bemt_nodes(self, K, wma, d, pitch, omega, v_ax, v_ip, rho, mu, a_s, phi):
+        """BEMT outputs at all K nodes: azimuth-averaged where the rotors are tilted in
+        forward flight, axial elsewhere (the unused azimuth rows of phi then copy the
+        axial ones, so that every unknown has an equation)."""
+        g, n, m = self.group, self.n_stations, self.n_azimuth
+        common = dict(radius_m=d["R"], hub_fraction=g.hub_fraction, blades=g.blades,
+                      chord_m=self.blade["chord_m"], twist_rad=self.blade["twist_rad"], spin=1.0)
+        per = dict(pitch_rad=pitch, omega_radps=omega, v_axial_mps=v_ax, v_inplane_mps=v_ip, rho_kgpm3=rho,
+                   mu_Pas=mu, a_mps=a_s)
+        mask = self.transition_nodes(wma)
+        if m == 1 or mask.all():
+            return self.bemt.map(K)(**common, **per, phi_rad=phi), None
+        it, ia = np.flatnonzero(mask), np.flatnonzero(~mask)
+        axial = bemt_function(self.section, n, 1, outputs="nlp")
+        pieces = []
+        if it.size:
+            pieces.append((it, self.bemt.map(it.size)(**common, **{k: _cols(v, it, K) for k, v in per.items()},
+                                                         phi_rad=phi[:, list(it)])))
+        pa = phi[:n, list(ia)]
+        pieces.append((ia, axial.map(ia.size)(**common, **{k: _cols(v, ia, K) for k, v in per.items()},
+                                             phi_rad=pa)))
+        order = np.concatenate([p[0] for p in pieces])
+        # column j of the stacked blocks is node order[j]: perm[j, order[j]] = 1 puts it back
+        perm = ca.DM.triplet(list(range(K)), [int(o) for o in order], ca.DM.ones(K), K, K)
+        out = {}
+        for key in pieces[0][1].keys():
+            if key == "residual":
+                continue
+            out[key] = ca.mtimes(ca.horzcat(*[p[1][key] for p in pieces]), perm)
+        rows_m = [f"r{i} psi{j}" for j in range(m) for i in range(n)]
+        groups = []
+        if it.size:
+            groups.append(("BEMT (azimuth-averaged)", pieces[0][1]["residual"], it, rows_m))
+        groups.append(("BEMT (axial)", pieces[-1][1]["residual"], ia, rows_m[:n]))
+        # unused azimuth rows at the axial nodes follow the axial solution
+        groups.append(("BEMT azimuth copies", phi[n:, list(ia)] - ca.repmat(pa, m - 1, 1), ia, rows_m[n:]))
+        return out, groups
 
     # ------------------------------------------------------------------ guesses
     def _numeric_design(self):
@@ -502,36 +617,82 @@ class Aircraft:
         CL_req = m * (G0 * np.cos(gam) + V * gdot) / (q * S)
         alpha = np.clip((CL_req - CL0) / CLa - (wma if tilting else 0.0), np.radians(-8), np.radians(12))
         theta_in = np.asarray(nodes.body_angle_rad, float).ravel()
-        theta = np.where(np.isnan(theta_in), alpha + gam, theta_in)
+        free = np.isnan(theta_in)
+        theta = np.where(free, alpha + gam, theta_in)
+        DM = lambda x: ca.DM(np.asarray(x, float).reshape(1, -1))  # noqa: E731
+        lo_th, hi_th = np.radians(-55.0), np.radians(80.0)
+        vectored = tilting & (np.abs(wma) > np.radians(5.0))
+
+        def forces(th, sel):
+            """Lift, drag, and the force the thrust must supply (path frame) at attitudes th."""
+            a_ = th - gam[sel]
+            wa = a_ + wma[sel] if tilting else a_
+            r = vlm.solve(DM(wa), DM(V[sel]), rho=DM(rho[sel]), mach=DM(V[sel] / a_s[sel]))
+            pdn = profile_drag(vlm, r, DM(rho[sel]), DM(mu[sel]), DM(V[sel] / a_s[sel]))
+            Ls, Ds = (np.asarray(x, float).ravel() for x in self.stall_correction(
+                vlm, r, pdn, DM(rho[sel]), DM(V[sel]))) if self.wing_stall else (0.0, 0.0)
+            Db = np.asarray(body_drag(self.bodies, DM(V[sel]), DM(rho[sel]), DM(mu[sel]),
+                                      DM(V[sel] / a_s[sel]))[0]).ravel()
+            Dn = np.asarray(r["D_i"]).ravel() + (np.asarray(pdn["D_p"]).ravel() + Ds + Db) * \
+                (1 + self.misc_drag_fraction) * 1.05
+            Ln = np.asarray(r["L"]).ravel() + Ls
+            nt = Dn + m * (G0 * np.sin(gam[sel]) + acc[sel])
+            nn = m * (G0 * np.cos(gam[sel]) + V[sel] * gdot[sel]) - Ln
+            return nt, nn
+
+        allsel = np.ones(K, bool)
+        need_t, need_n = forces(theta, allsel)
+        fv = vectored & free
+        if fv.any():
+            # tilted rotors carry the weight: choose the attitude at which the thrust axis
+            # points along the force the rotors must supply, with the least thrust
+            idx = np.flatnonzero(fv)
+            grid = np.radians(np.arange(-40.0, 81.0, 2.0))
+            G = grid.size
+            sel = np.repeat(idx, G)
+            th_g = np.tile(grid, idx.size)
+            nt, nn = forces(th_g, sel)
+            a_g = th_g - gam[sel] + wma[sel]
+            cross = (-nt * np.sin(a_g) + nn * np.cos(a_g)).reshape(idx.size, G)
+            thrust = (nt * np.cos(a_g) + nn * np.sin(a_g)).reshape(idx.size, G)
+            for j, k in enumerate(idx):
+                c, t = cross[j], thrust[j]
+                roots = [i for i in range(G - 1) if c[i] == 0 or c[i] * c[i + 1] < 0]
+                good = [i for i in roots if t[i] > 0]
+                if good:
+                    i = min(good, key=lambda i: t[i])
+                    f = c[i] / (c[i] - c[i + 1]) if c[i] != c[i + 1] else 0.0
+                    theta[k] = grid[i] + f * (grid[i + 1] - grid[i])
+                else:
+                    theta[k] = grid[np.argmin(np.abs(c) / (np.abs(t) + 1.0))]
+            nt, nn = forces(theta, allsel)
+            need_t, need_n = nt, nn
         alpha = theta - gam
-        wing_alpha = alpha + wma if tilting else alpha
-        r = vlm.solve(ca.DM(wing_alpha.reshape(1, -1)), ca.DM(V.reshape(1, -1)), rho=ca.DM(rho.reshape(1, -1)),
-                      mach=ca.DM((V / a_s).reshape(1, -1)))
-        Dp = np.asarray(profile_drag(vlm, r, ca.DM(rho.reshape(1, -1)), ca.DM(mu.reshape(1, -1)),
-                                     ca.DM((V / a_s).reshape(1, -1)))["D_p"]).ravel()
-        Db = np.asarray(body_drag(self.bodies, ca.DM(V.reshape(1, -1)), ca.DM(rho.reshape(1, -1)),
-                                  ca.DM(mu.reshape(1, -1)), ca.DM((V / a_s).reshape(1, -1)))[0]).ravel() \
-            if hasattr(self, "bodies") else 0.0
-        D = np.asarray(r["D_i"]).ravel() + (Dp + Db) * (1 + self.misc_drag_fraction) * 1.05
-        L = np.asarray(r["L"]).ravel()
         a_rot = alpha + (wma if tilting else 0.0)
-        # along the path: T cos(a) = D + m (g sin(gam) + acc); normal: T sin(a) = m g cos - L
-        need_t = D + m * (G0 * np.sin(gam) + acc)
-        need_n = m * (G0 * np.cos(gam) + V * gdot) - L
-        T_total = np.where(np.abs(np.cos(a_rot)) > 0.3, need_t / np.maximum(np.cos(a_rot), 0.3),
-                           np.hypot(need_t, need_n))
+        T_total = np.where(vectored, np.hypot(need_t, need_n),
+                           need_t / np.maximum(np.cos(a_rot), 0.3))
         T1 = np.maximum(T_total / g.count, 0.03 * m * G0 / g.count)
-        omega = self._omega_for_thrust(T1, V * np.cos(a_rot), V * np.sin(a_rot), h, pitch)
-        res = self._bemt_numeric(omega, V * np.cos(a_rot), V * np.sin(a_rot), h, pitch)
-        phi = np.asarray(res["phi_rad"], float).reshape(self.n_stations * self.n_azimuth, K)
+        mask = self.transition_nodes(wma)
+        n, m = self.n_stations, self.n_azimuth
+        omega = np.zeros(K)
+        phi = np.zeros((n * m, K))
+        Q1 = np.zeros(K)
+        for sel, mm in ((mask, m), (~mask, 1)):
+            if not sel.any():
+                continue
+            args = (V[sel] * np.cos(a_rot[sel]), V[sel] * np.sin(a_rot[sel]), h[sel], pitch[sel])
+            omega[sel] = self._omega_for_thrust(T1[sel], *args, n_azimuth=mm)
+            res = self._bemt_numeric(omega[sel], *args, n_azimuth=mm)
+            ph = np.asarray(res["phi_rad"], float).reshape(n * mm, int(sel.sum()))
+            phi[:, sel] = ph if mm == m else np.tile(ph, (m, 1))
+            Q1[sel] = np.asarray(res["torque_Nm"], float).ravel()
         phi = np.clip(phi, PHI_MIN_RAD, PHI_MAX_RAD)
-        Q1 = np.asarray(res["torque_Nm"], float).ravel()
         soc = np.asarray(nodes.states.get("state_of_charge", np.ones(K)), float).ravel() * np.ones(K)
         po = self.powertrain.analyze(Q1, omega, np.clip(soc, 0.05, 1.0))
         return {"body_angle_rad": theta, f"{g.name}.omega": omega, f"{g.name}.phi": phi,
                 "battery_current_A": np.asarray(po["battery_current_A"], float).ravel()}
 
-    def _bemt_numeric(self, omega, v_ax, v_ip, h, pitch):
+    def _bemt_numeric(self, omega, v_ax, v_ip, h, pitch, n_azimuth=1):
         g = self.group
         blade = self.baseline_blade()
         atm = atmosphere(h)
@@ -540,18 +701,27 @@ class Aircraft:
                   "chord_m": np.asarray(blade["chord_m"], float).ravel(),
                   "twist_rad": np.asarray(blade["twist_rad"], float).ravel(),
                   "pitch_rad": pitch, "omega_radps": omega, "v_axial_mps": v_ax,
-                  "v_inplane_mps": np.abs(v_ip) if self.n_azimuth > 1 else np.zeros(K),
+                  "v_inplane_mps": v_ip if n_azimuth > 1 else np.zeros(K),
                   "rho_kgpm3": atm["density_kgpm3"], "mu_Pas": atm["dynamic_viscosity_Pas"],
                   "a_mps": atm["speed_of_sound_mps"], "spin": np.ones(K)}
-        return analyze_inputs(self.section, inputs, self.n_stations, self.n_azimuth)
+        return analyze_inputs(self.section, inputs, self.n_stations, n_azimuth)
 
-    def _omega_for_thrust(self, T1, v_ax, v_ip, h, pitch, iterations=28):
-        """Rotor speed giving thrust ``T1`` per rotor at each node (bisection on the BEMT)."""
-        lo = np.full(T1.shape, 0.1 * self.omega_design)
-        hi = np.full(T1.shape, 2.5 * self.omega_design)
+    def _omega_for_thrust(self, T1, v_ax, v_ip, h, pitch, iterations=22, n_azimuth=1):
+        """Rotor speed giving thrust ``T1`` per rotor at each node: a scan for the
+        lowest speed whose thrust reaches T1 (thrust need not be monotonic in speed
+        for a blade far from its design inflow), then bisection in that interval."""
+        grid = self.omega_design * np.linspace(0.05, 2.5, 25)
+        K = T1.size
+        rep = lambda x: np.tile(np.asarray(x, float) * np.ones(K), grid.size)  # noqa: E731
+        Tg = np.asarray(self._bemt_numeric(np.repeat(grid, K), rep(v_ax), rep(v_ip), rep(h), rep(pitch),
+                                           n_azimuth)["thrust_N"], float).reshape(grid.size, K)
+        reach = Tg >= T1[None, :]
+        j = np.where(reach.any(axis=0), np.argmax(reach, axis=0), grid.size - 1)
+        hi = grid[j]
+        lo = grid[np.maximum(j - 1, 0)]
         for _ in range(iterations):
             mid = 0.5 * (lo + hi)
-            T = np.asarray(self._bemt_numeric(mid, v_ax, v_ip, h, pitch)["thrust_N"], float).ravel()
+            T = np.asarray(self._bemt_numeric(mid, v_ax, v_ip, h, pitch, n_azimuth)["thrust_N"], float).ravel()
             lo = np.where(T < T1, mid, lo)
             hi = np.where(T < T1, hi, mid)
         return 0.5 * (lo + hi)

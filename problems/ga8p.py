@@ -1,0 +1,32 @@
+"""GA-8P: the GA-2P airframe with eight 5-bladed propellers, optimized over the GA profile (Eq. 7).
+
+As ``problems/ga2p.py``, but the propellers' span positions are held fixed and equally
+spaced (as in the paper); the design variables are the propellers' Adkins-Liebeck
+inputs and the wing's span, taper and section twists.  The initial design violates
+the tip-Mach constraint (Table 3's footnote), so ``--analysis`` flies it as given and
+the optimization starts infeasible.
+
+Options (``-o KEY=VALUE``): ``nodes`` per segment (6), ``cruise_distance_nmi`` (50),
+``reserve_cruise_distance_nmi`` (5), ``n_stations`` (16), ``wing_strips`` (24),
+``mass_model``, ``rotation``.
+"""
+from mdo.core.units import KWH, NMI
+from mdo.mission.profiles import ga_mission
+from mdo.nlp import Problem
+from mdo.vehicle.aircraft import Aircraft
+from mdo.vehicle.catalog import ga8p
+from mdo.vehicle.reports import add_vehicle_reports
+
+
+def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 50.0,
+          reserve_cruise_distance_nmi: float = 5.0, n_stations: int = 16, wing_strips: int = 24,
+          mass_model: str = "buildup", rotation: str = "inboard_up"):
+    p = Problem("ga8p", "GA-8P whole-mission optimization (Clarke et al. Eq. 7)")
+    vehicle = Aircraft(ga8p(rotation), free=("rotor", "wing"), n_stations=n_stations, wing_strips=wing_strips,
+                       mass_model=mass_model, design_point_constraints=not analysis)
+    mission = ga_mission(vehicle, nodes=nodes, cruise_distance_m=cruise_distance_nmi * NMI,
+                         reserve_cruise_distance_m=reserve_cruise_distance_nmi * NMI).build(p)
+    p.minimize(mission.energy_used_J / KWH, unit="kWh", scale=10.0, name="battery energy used")
+    p.add_report(mission.report)
+    add_vehicle_reports(p, vehicle, mission)
+    return p

@@ -1,0 +1,35 @@
+"""TTW: the tandem tilt-wing eVTOL, optimized over the eVTOL profile (Eq. 7).
+
+``mdo run problems/ttw.py`` minimizes the battery energy used over the eVTOL profile of
+Table 5 (vertical climb, transitions with the wing-mounted angle and blade pitch
+command of each segment, climb, cruise, descent, reserve, approach and vertical
+descent) with respect to the rotors' Adkins-Liebeck inputs, the span, taper and
+section twists of both wings at constant area, and the inner and outer rotor span
+positions (shared by both wings), subject to the design-point tip Mach <= 0.6, disk
+clearance and the mission, in one IPOPT solve.  ``--analysis`` freezes the design at
+Table 3's initial values.
+
+Options (``-o KEY=VALUE``): ``nodes`` per segment (6), ``cruise_distance_nmi`` (50),
+``reserve_cruise_distance_nmi`` (5), ``n_stations`` (16), ``n_azimuth`` (4, transition
+segments only), ``wing_strips`` (16 per wing), ``mass_model``, ``rotation``.
+"""
+from mdo.core.units import KWH, NMI
+from mdo.mission.profiles import evtol_mission
+from mdo.nlp import Problem
+from mdo.vehicle.aircraft import Aircraft
+from mdo.vehicle.catalog import ttw
+from mdo.vehicle.reports import add_vehicle_reports
+
+
+def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 50.0,
+          reserve_cruise_distance_nmi: float = 5.0, n_stations: int = 16, n_azimuth: int = 4,
+          wing_strips: int = 16, mass_model: str = "buildup", rotation: str = "inboard_up"):
+    p = Problem("ttw", "TTW tandem tilt-wing whole-mission optimization (Clarke et al. Eq. 7)")
+    vehicle = Aircraft(ttw(rotation), n_stations=n_stations, n_azimuth=n_azimuth, wing_strips=wing_strips,
+                       mass_model=mass_model)
+    mission = evtol_mission(vehicle, nodes=nodes, cruise_distance_m=cruise_distance_nmi * NMI,
+                            reserve_cruise_distance_m=reserve_cruise_distance_nmi * NMI).build(p)
+    p.minimize(mission.energy_used_J / KWH, unit="kWh", scale=10.0, name="battery energy used")
+    p.add_report(mission.report)
+    add_vehicle_reports(p, vehicle, mission)
+    return p
