@@ -13,6 +13,7 @@ Options (``-o KEY=VALUE``): ``nodes`` per segment (6), ``cruise_distance_nmi`` (
 from mdo.core.units import KWH, NMI
 from mdo.mission.profiles import ga_mission
 from mdo.nlp import Problem
+from mdo.plots import figure_report
 from mdo.vehicle.aircraft import Aircraft
 from mdo.vehicle.catalog import ga8p
 from mdo.vehicle.reports import add_vehicle_reports
@@ -27,6 +28,8 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
     mission = ga_mission(vehicle, nodes=nodes, cruise_distance_m=cruise_distance_nmi * NMI,
                          reserve_cruise_distance_m=reserve_cruise_distance_nmi * NMI).build(p)
     p.minimize(mission.energy_used_J / KWH, unit="kWh", scale=10.0, name="battery energy used")
+    p.ipopt_options["max_iter"] = 500
     p.add_report(mission.report)
     add_vehicle_reports(p, vehicle, mission)
+    p.add_report(figure_report)
     return p

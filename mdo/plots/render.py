@@ -4,6 +4,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from .convergence import plot_convergence
+from .figures import plot_loading, plot_mission, plot_rotor
 
 __all__ = ["render_run", "RENDERERS"]
 
@@ -15,7 +16,31 @@ def _convergence(run: Path):
     return []
 
 
-RENDERERS = [_convergence]
+def _mission(run: Path):
+    if (run / "mission.csv").exists():
+        return [plot_mission(run / "mission.csv", run / "mission.png")]
+    return []
+
+
+def _loading(run: Path):
+    if (run / "loading.csv").exists():
+        base = run / "analysis" / "loading.csv"
+        return [plot_loading(run / "loading.csv", run / "loading.png", baseline=base if base.exists() else None)]
+    return []
+
+
+def _rotor(run: Path):
+    if (run / "blade.csv").exists():
+        return [plot_rotor(run, run / "rotor.png")]
+    return []
+
+
+RENDERERS = [_convergence, _mission, _loading, _rotor]
+
+
+def figure_report(solution, out_dir):
+    """A problem report (``problem.add_report(figure_report)``) that renders every figure."""
+    return render_run(out_dir)
 
 
 def register_renderer(fn):

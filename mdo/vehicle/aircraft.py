@@ -59,14 +59,21 @@ __all__ = ["Aircraft", "DesignBounds"]
 
 @dataclass
 class DesignBounds:
-    """Bounds of the design variables, as factors of the baseline (or absolute where noted)."""
+    """Bounds of the design variables, as factors of the baseline (or absolute where noted).
+
+    The paper gives no bounds.  Its GA-2P optimum has a span of exactly 13.00 m, which we
+    read as the upper bound (1.14 x 11.4 m) and apply as the same factor to every wing;
+    the others are ordinary engineering ranges (a tapered wing between 0.35 and
+    rectangular; design speeds within -40 %/+30 % of the baseline, as Table 3's
+    optima move at most 18 %; design cl of NACA 4412 sections 0.4-1.0, below stall).
+    """
     design_thrust: tuple = (0.5, 2.0)
-    design_speed: tuple = (0.5, 1.6)
+    design_speed: tuple = (0.6, 1.3)
     tip_radius: tuple = (0.6, 1.6)
-    design_cl: tuple = (0.3, 1.1)          # absolute
-    span: tuple = (0.75, 1.35)
-    taper: tuple = (0.3, 1.2)              # absolute
-    twist_deg: tuple = (-6.0, 10.0)        # absolute
+    design_cl: tuple = (0.4, 1.0)          # absolute
+    span: tuple = (0.8, 13.0 / 11.4)
+    taper: tuple = (0.35, 1.0)             # absolute
+    twist_deg: tuple = (-5.0, 8.0)         # absolute
     span_eta: tuple = (0.0, 1.0)           # absolute (fraction of the semispan)
     tip_clearance_m: float = 0.05          # between neighbouring disks, and disk to symmetry plane
 

@@ -1,14 +1,174 @@
-"""Run-folder reports of an :class:`~mdo.vehicle.aircraft.Aircraft` mission: mass build-up."""
+"""Run-folder reports of an :class:`~mdo.vehicle.aircraft.Aircraft` mission.
+
+Written after a solve by ``add_vehicle_reports``:
+
+``mass.md``      the mass build-up at the solution (terms, TOGW, Table 1 comparison)
+``loading.csv``  spanwise loading at mid-cruise, with and without the propeller wakes
+``blade.csv``    the Adkins-Liebeck blade at the solution (``r_over_R,c_over_R,beta_deg``,
+                 the geometry format ``mdo rotor sweep --geometry`` reads)
+``design.json``  every design variable and the derived geometry (span, chords, rotor positions)
+and ``geometry.png`` (3-D view of the lattice, rotor disks and fixed wakes).  The
+figures made from these files (loading, rotor, mission, convergence) belong to
+``mdo.plots`` (``mdo plot RUN_DIR``), which problem files register after this report.
+"""
 from __future__ import annotations
 
+import csv
+import json
+import math
 from pathlib import Path
 
-from .mass import mass_table_markdown
+import casadi as ca
+import numpy as np
 
-__all__ = ["add_vehicle_reports"]
+from ..core import units as u
+from ..rotor.geometry import station_layout
+from .mass import MassDesign, mass_table_markdown
+
+__all__ = ["add_vehicle_reports", "cruise_node"]
+
+
+def cruise_node(mission) -> int:
+    """Index of the middle node of the cruise segment (the first segment named CR)."""
+    idx = [k for k, lab in enumerate(mission.labels) if lab.split(" node ")[0] == "CR"]
+    if not idx:
+        V = np.asarray(mission.cond.speed_mps, float).ravel()
+        return int(np.argmax(V))
+    return idx[len(idx) // 2]
+
+
+def _val(solution, expr):
+    return np.asarray(solution.value(expr), float) if isinstance(expr, (ca.MX, ca.SX)) else np.asarray(expr, float)
+
+
+def _design_numbers(vehicle, solution) -> dict:
+    d = vehicle.design
+    out = {"tip_radius_m": float(_val(solution, d["R"])), "span_eta": _val(solution, d["eta"]).ravel().tolist(),
+           "design_thrust_N": float(_val(solution, d["T_design"])),
+           "design_speed_mps": float(_val(solution, d["V_design"])),
+           "design_cl": float(_val(solution, d["cl_design"])), "wings": {}}
+    for name, w in d["wings"].items():
+        out["wings"][name] = {"span_m": float(_val(solution, w["span"])), "taper": float(_val(solution, w["taper"])),
+                              "twist_deg": np.degrees(_val(solution, w["twist"]).ravel()).tolist()}
+    out["rotor_centers_m"] = [[float(_val(solution, c)) for c in p] for p in vehicle.rotor_positions]
+    out["togw_kg"] = float(_val(solution, vehicle.togw))
+    return out
+
+
+def _loading(vehicle, mission, solution, k):
+    """Strip y, chord and cl with and without the wakes at node k (numbers)."""
+    r = vehicle._last["vlm"]
+    vlm = vehicle.vlm
+    g = vlm.geometry
+    y = _val(solution, g["strip_mid"])[1, :]
+    chord = _val(solution, g["strip_chord"]).ravel()
+    cl_on = _val(solution, r["cl"])[:, k]
+    cond = mission.cond
+    alpha = cond.body_angle_rad[:, k] - cond.flight_path_angle_rad[:, k]
+    if vehicle.config.kind == "tilt_wing":
+        alpha = alpha + cond.parameters.get("wing_mounted_angle_rad", ca.DM.zeros(1, cond.size))[:, k]
+    V = cond.speed_mps[:, k]
+    r_off = vlm.solve(alpha, V)
+    cl_off = _val(solution, r_off["cl"]).ravel()
+    surf = [vlm.surfaces[i].name for i in vlm.strip_surface]
+    return y, chord, cl_on, cl_off, surf
+
+
+def _write_loading(vehicle, mission, solution, out: Path):
+    k = cruise_node(mission)
+    y, chord, cl_on, cl_off, surf = _loading(vehicle, mission, solution, k)
+    b = {n: float(_val(solution, w["span"])) for n, w in vehicle.design["wings"].items()}
+    c_ref = vehicle.config.main_wing.mean_aerodynamic_chord_m
+    with open(out / "loading.csv", "w", newline="") as f:
+        wr = csv.writer(f)
+        wr.writerow(["surface", "y_m", "y_over_semispan", "chord_m", "cl_props_on", "cl_props_off", "ccl_over_cref"])
+        for i in range(y.size):
+            semi = b.get(surf[i], 2 * max(abs(y[j]) for j in range(y.size) if surf[j] == surf[i])) / 2
+            wr.writerow([surf[i], f"{y[i]:.5f}", f"{y[i] / semi:.5f}", f"{chord[i]:.5f}", f"{cl_on[i]:.6f}",
+                         f"{cl_off[i]:.6f}", f"{chord[i] * cl_on[i] / c_ref:.6f}"])
+    return k
+
+
+def _write_blade(vehicle, solution, out: Path):
+    n = vehicle.n_stations
+    g = vehicle.group
+    s, _ = station_layout(n)
+    h = g.hub_fraction
+    R = float(_val(solution, vehicle.design["R"]))
+    r_over_R = h + (1 - h) * np.asarray(s, float)
+    chord = _val(solution, vehicle.blade["chord_m"]).ravel()
+    twist = _val(solution, vehicle.blade["twist_rad"]).ravel()
+    with open(out / "blade.csv", "w", newline="") as f:
+        wr = csv.writer(f)
+        wr.writerow(["r_over_R", "c_over_R", "beta_deg"])
+        for i in range(n):
+            wr.writerow([f"{r_over_R[i]:.5f}", f"{chord[i] / R:.5f}", f"{math.degrees(twist[i]):.4f}"])
+    return R
+
+
+def _plot_geometry(vehicle, mission, solution, out: Path, k: int):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig = plt.figure(figsize=(9, 6))
+    ax = fig.add_subplot(111, projection="3d")
+    for half in vehicle.vlm.outline():
+        le, te = _val(solution, half["le"]), _val(solution, half["te"])
+        poly = np.hstack([le, te[:, ::-1], le[:, :1]])
+        ax.plot(-poly[0], poly[1], poly[2], "k-", lw=0.8)
+        for j in range(le.shape[1]):
+            ax.plot([-le[0, j], -te[0, j]], [le[1, j], te[1, j]], [le[2, j], te[2, j]], color="0.6", lw=0.3)
+    f = vehicle.config.fuselage
+    xs = np.linspace(0, f.length_m, 30)
+    rad = 0.5 * math.sqrt(f.width_m * f.height_m) * np.sqrt(np.clip(1 - ((xs - 0.4 * f.length_m) /
+                                                                        (0.6 * f.length_m)) ** 2, 0.02, 1))
+    for ang in np.linspace(0, 2 * np.pi, 9)[:-1]:
+        ax.plot(-xs, rad * np.cos(ang), vehicle.config.main_wing.root_z_m - 0.6 + rad * np.sin(ang), color="0.75",
+                lw=0.6)
+    R = float(_val(solution, vehicle.design["R"]))
+    bm = vehicle._last["bemt"]
+    V = float(np.asarray(mission.cond.speed_mps)[0, k])
+    om = float(_val(solution, mission.unknowns[f"{vehicle.group.name}.omega"])[0, k])
+    va = float(_val(solution, bm["va_mean_mps"]).ravel()[k])
+    pitch = 2 * math.pi * (V + va) / max(om, 1e-6)
+    t = np.linspace(0, 2 * math.pi, 60)
+    for rot in vehicle.rotors:
+        c = np.asarray([float(_val(solution, x)) for x in (rot.center if isinstance(rot.center, tuple)
+                                                            else [rot.center[i] for i in range(3)])])
+        ax.plot(-c[0] + 0 * t, c[1] + R * np.cos(t), c[2] + R * np.sin(t), "b-", lw=1.0)
+        tw = np.linspace(0, 3 * 2 * math.pi, 240)
+        for blade in range(vehicle.group.blades):
+            ph = tw * rot.spin + 2 * math.pi * blade / vehicle.group.blades
+            ax.plot(-(c[0] + pitch * tw / (2 * math.pi)), c[1] + R * np.cos(ph), c[2] + R * np.sin(ph),
+                    color="tab:red", lw=0.4, alpha=0.6)
+    ax.set_xlabel("-x (m)")
+    ax.set_ylabel("y (m)")
+    ax.set_zlabel("z (m)")
+    lim = 0.55 * max(float(_val(solution, w["span"])) for w in vehicle.design["wings"].values())
+    ax.set_xlim(-lim * 1.6, lim * 0.4)
+    ax.set_ylim(-lim, lim)
+    ax.set_zlim(-lim * 0.5, lim * 0.5)
+    ax.view_init(elev=25, azim=-130)
+    ax.set_title(f"{vehicle.name}: lattice, rotor disks and fixed wakes (3 turns at mid-cruise)")
+    fig.tight_layout()
+    fig.savefig(out / "geometry.png", dpi=110)
+    plt.close(fig)
 
 
 def add_vehicle_reports(problem, vehicle, mission):
-    def mass_report(solution, out_dir):
-        Path(out_dir, "mass.md").write_text(mass_table_markdown(vehicle.config))
-    problem.add_report(mass_report)
+    """Register the vehicle's reports (mass, loading, blade, design, figures) on ``problem``."""
+
+    def vehicle_report(solution, out_dir):
+        out = Path(out_dir)
+        design = _design_numbers(vehicle, solution)
+        md = MassDesign({n: w["span_m"] for n, w in design["wings"].items()},
+                        {n: w["taper"] for n, w in design["wings"].items()},
+                        {vehicle.group.name: design["tip_radius_m"]})
+        (out / "mass.md").write_text(mass_table_markdown(vehicle.config, md))
+        (out / "design.json").write_text(json.dumps(design, indent=1))
+        k = _write_loading(vehicle, mission, solution, out)
+        _write_blade(vehicle, solution, out)
+        _plot_geometry(vehicle, mission, solution, out, k)
+
+    problem.add_report(vehicle_report)
