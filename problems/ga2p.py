@@ -8,7 +8,7 @@ design-point tip Mach <= 0.6, disk clearance and the mission itself, in one IPOP
 solve.  ``--analysis`` freezes the design at Table 3's initial values.
 
 Options (``-o KEY=VALUE``): ``nodes`` per segment (6), ``cruise_distance_nmi`` (50),
-``reserve_cruise_distance_nmi`` (5), ``n_stations`` (16), ``wing_strips`` (20),
+``reserve_cruise_distance_nmi`` (5), ``n_stations`` (16), ``wing_strips`` (24),
 ``mass_model`` ("buildup" or "fixed"), ``rotation`` ("inboard_up").
 """
 from mdo.core.units import KWH, NMI
@@ -21,7 +21,7 @@ from mdo.vehicle.reports import add_vehicle_reports
 
 
 def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 50.0,
-          reserve_cruise_distance_nmi: float = 5.0, n_stations: int = 16, wing_strips: int = 20,
+          reserve_cruise_distance_nmi: float = 5.0, n_stations: int = 16, wing_strips: int = 24,
           mass_model: str = "buildup", rotation: str = "inboard_up"):
     p = Problem("ga2p", "GA-2P whole-mission optimization (Clarke et al. Eq. 7)")
     vehicle = Aircraft(ga2p(rotation), n_stations=n_stations, wing_strips=wing_strips, mass_model=mass_model)

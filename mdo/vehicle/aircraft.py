@@ -120,7 +120,7 @@ class Aircraft:
                  coupling: str = "swirl", mass_model: str = "buildup", powertrain_limits: bool = False,
                  misc_drag_fraction: float = 0.05, bounds: DesignBounds | None = None,
                  positions_free: bool | None = None, design_point_constraints: bool = True,
-                 wing_stall: bool | None = None):
+                 wing_stall: bool | None = None, slipstream_breaks: bool = False):
         """See the class docstring; ``design_point_constraints=False`` leaves out the
         tip-Mach and disk-clearance constraints (analysis of a violating design)."""
         if coupling not in ("swirl", "freestream", "local"):
@@ -145,6 +145,12 @@ class Aircraft:
         self.powertrain_limits = bool(powertrain_limits)
         # post-stall strips (tilt-wing transitions); the linear lattice elsewhere
         self.wing_stall = (config.kind == "tilt_wing") if wing_stall is None else bool(wing_stall)
+        # Strip boundaries at the slipstream edges move with the rotors, but the strip
+        # counts between them are fixed by the baseline: when a rotor moves far (GA-2P's
+        # optimum moves it from 0.23 to 0.8 of the semispan) an interval keeps one strip.
+        # The default is a fixed cosine lattice; the averaged wake is smooth (cored
+        # sheets), so lift and drag stay smooth in the rotor position.
+        self.slipstream_breaks = bool(slipstream_breaks)
         # tip Mach and disk clearance; off for the analysis of a design that violates them (GA-8P)
         self.design_point_constraints = bool(design_point_constraints)
         self.misc_drag_fraction = float(misc_drag_fraction)
@@ -277,7 +283,7 @@ class Aircraft:
             span, taper, twist = dw["span"], dw["taper"], dw["twist"]
             semispan = span / 2
             breaks, nominal = [], []
-            if w.name in g.wings:
+            if w.name in g.wings and self.slipstream_breaks:
                 for i in range(len(g.span_eta)):
                     e = eta_r[i]
                     lo = (e * semispan - R) / semispan

@@ -129,7 +129,7 @@ def _plot_geometry(vehicle, mission, solution, out: Path, k: int):
     R = float(_val(solution, vehicle.design["R"]))
     bm = vehicle._last["bemt"]
     V = float(np.asarray(mission.cond.speed_mps)[0, k])
-    om = float(_val(solution, mission.unknowns[f"{vehicle.group.name}.omega"])[0, k])
+    om = float(_val(solution, mission.unknowns[f"{vehicle.group.name}.omega"]).ravel()[k])
     va = float(_val(solution, bm["va_mean_mps"]).ravel()[k])
     pitch = 2 * math.pi * (V + va) / max(om, 1e-6)
     t = np.linspace(0, 2 * math.pi, 60)

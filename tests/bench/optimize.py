@@ -1,0 +1,80 @@
+"""Benchmark of the whole-mission optimizations (issue 10): wall time, IPOPT
+iterations, NLP size and where the time goes, per problem.
+
+    python tests/bench/optimize.py [ga2p ga8p ttw] [--repeats N] [--from-baseline]
+
+Each repeat builds the problem, runs the baseline analysis (design frozen) and
+the optimization warm-started from it, exactly as ``mdo run`` does; times are
+medians over the repeats.  Not collected by pytest.
+"""
+from __future__ import annotations
+
+import argparse
+import statistics
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(ROOT))
+
+from mdo.nlp import load_problem_file  # noqa: E402
+
+
+def one(problem: str):
+    path = ROOT / "problems" / f"{problem}.py"
+    t0 = time.perf_counter()
+    an = load_problem_file(path, analysis=True)
+    t_build_an = time.perf_counter() - t0
+    sol_an = an.solve(verbose=False)
+    with tempfile.TemporaryDirectory() as tmp:
+        ws = Path(tmp) / "solution.json"
+        sol_an.save(tmp)
+        t1 = time.perf_counter()
+        op = load_problem_file(path)
+        t_build = time.perf_counter() - t1
+        op.warm_start(ws)
+        sol = op.solve(verbose=False)
+    tm = sol.timing
+    fun = sum(tm.get(f"t_wall_nlp_{k}", 0.0) for k in ("f", "g"))
+    der = sum(tm.get(f"t_wall_nlp_{k}", 0.0) for k in ("grad_f", "jac_g", "hess_l"))
+    return {
+        "analysis_status": sol_an.status, "analysis_iterations": sol_an.iterations,
+        "analysis_wall_s": sol_an.wall_time_s, "analysis_build_s": t_build_an,
+        "status": sol.status, "iterations": sol.iterations, "solve_wall_s": sol.wall_time_s,
+        "build_s": t_build, "total_wall_s": time.perf_counter() - t0,
+        "energy_kWh": sol.summary_values().get("battery_energy_kWh"),
+        "baseline_energy_kWh": sol_an.summary_values().get("battery_energy_kWh"),
+        "function_eval_s": fun, "derivative_eval_s": der,
+        "jacobian_s": tm.get("t_wall_nlp_jac_g", 0.0), "hessian_s": tm.get("t_wall_nlp_hess_l", 0.0),
+        "n_hessian": tm.get("n_call_nlp_hess_l", 0), "n_jacobian": tm.get("n_call_nlp_jac_g", 0),
+        "ipopt_total_s": tm.get("t_wall_total", 0.0), **{f"nlp_{k}": v for k, v in sol.nlp_size.items()},
+    }
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("problems", nargs="*", default=["ga2p", "ga8p", "ttw"])
+    ap.add_argument("--repeats", type=int, default=1)
+    args = ap.parse_args()
+    for prob in args.problems:
+        runs = [one(prob) for _ in range(args.repeats)]
+        med = lambda k: statistics.median(r[k] for r in runs)  # noqa: E731
+        r = runs[-1]
+        print(f"\n== {prob} ({args.repeats} repeat(s); medians)")
+        print(f"baseline analysis: {r['analysis_status']}, {r['analysis_iterations']} iterations, "
+              f"build {med('analysis_build_s'):.1f} s, solve {med('analysis_wall_s'):.1f} s, "
+              f"{r['baseline_energy_kWh']:.3f} kWh")
+        print(f"optimization:      {r['status']}, {r['iterations']} iterations, build {med('build_s'):.1f} s, "
+              f"solve {med('solve_wall_s'):.1f} s, {r['energy_kWh']:.3f} kWh")
+        print(f"total wall (both stages, builds included): {med('total_wall_s'):.1f} s")
+        print(f"NLP: {r['nlp_variables']} variables, {r.get('nlp_constraints_ipopt', r['nlp_constraints'])} "
+              f"constraints, Jacobian nnz {r.get('nlp_jacobian_nnz')}, Hessian nnz {r.get('nlp_hessian_nnz')}")
+        print(f"in IPOPT {med('ipopt_total_s'):.1f} s: function evaluations {med('function_eval_s'):.2f} s, "
+              f"derivatives {med('derivative_eval_s'):.2f} s (Jacobian {med('jacobian_s'):.2f} s over "
+              f"{r['n_jacobian']} calls, Hessian {med('hessian_s'):.2f} s over {r['n_hessian']} calls)")
+
+
+if __name__ == "__main__":
+    main()
