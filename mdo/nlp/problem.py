@@ -428,9 +428,10 @@ class Solution:
                 viol = np.maximum(r, 0.0)
             else:
                 viol = np.maximum(-r, 0.0)
-            viol = np.where(np.isfinite(viol), viol, np.inf)
+            bad = ~np.isfinite(r)
+            viol = np.where(bad, np.inf, viol)
             i = int(np.argmax(viol)) if viol.size else 0
-            violations.append({"group": g.name, "kind": g.kind,
+            violations.append({"group": g.name, "kind": g.kind, "nonfinite": int(bad.sum()),
                                "max_violation": float(viol[i] * g.scale) if viol.size else 0.0,
                                "scaled": float(viol[i]) if viol.size else 0.0,
                                "where": g.labels[i] if viol.size else "", "unit": g.unit,
@@ -471,6 +472,10 @@ class Solution:
             return "all constraint groups satisfied (scaled violation <= %g)" % tol
         lines = ["worst-violated constraint groups (scaled violation, value in group units, where):"]
         for v in bad[:top]:
+            if v.get("nonfinite"):
+                lines.append(f"  {v['group']:<32s} {v['kind']:>2s}  NaN/Inf in {v['nonfinite']} element(s), "
+                             f"first at {v['where']} (the block of this group produced it)")
+                continue
             lines.append(f"  {v['group']:<32s} {v['kind']:>2s}  {v['scaled']:10.3e}  "
                          f"{v['max_violation']:10.3e} {v['unit']:<6s} at {v['where']}")
         return "\n".join(lines)

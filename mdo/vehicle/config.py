@@ -164,6 +164,25 @@ class VehicleConfig:
     mass_inputs: dict = field(default_factory=dict)
     notes: tuple = ()
 
+    def __post_init__(self):
+        names = {w.name for w in self.wings}
+        for g in self.rotor_groups:
+            for wn in g.wings:
+                if wn not in names:
+                    raise InputError(f"{g.name}.wings", f"no wing named {wn!r}; have {', '.join(sorted(names))}")
+                semi = self.wing(wn).span_m / 2
+                y = sorted(float(e) * semi for e in g.span_eta)
+                if y[0] < g.radius_m:
+                    raise InputError(f"{g.name}.span_eta",
+                                     f"the inner disk on {wn} (y = {y[0]:.3f} m) crosses the symmetry plane and "
+                                     f"overlaps its mirror image: allowed y >= R = {g.radius_m:.3f} m, i.e. "
+                                     f"span_eta >= {g.radius_m / semi:.3f}")
+                for a, b in zip(y[:-1], y[1:]):
+                    if b - a < 2 * g.radius_m:
+                        raise InputError(f"{g.name}.span_eta",
+                                         f"rotors at y = {a:.3f} m and {b:.3f} m on {wn} overlap: allowed spacing "
+                                         f">= 2 R = {2 * g.radius_m:.3f} m, got {b - a:.3f} m")
+
     def wing(self, name: str) -> WingConfig:
         for w in self.wings:
             if w.name == name:

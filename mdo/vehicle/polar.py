@@ -193,7 +193,9 @@ class PolarVehicle:
 
     def states(self) -> list:
         scale = self.capacity_J if self.capacity_J is not None else 1e8
-        return [State("energy_drawn", unit="J", scale=scale, initial=0.0,
+        # a battery of given capacity cannot deliver more than it holds
+        upper = self.capacity_J if self.capacity_J is not None else np.inf
+        return [State("energy_drawn", unit="J", scale=scale, initial=0.0, upper=upper,
                       description="energy drawn from the battery since the start of the mission")]
 
     def energy_used_J(self, initial: dict, final: dict):
