@@ -24,7 +24,8 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
           reserve_cruise_distance_nmi: float = 5.0, n_stations: int = 16, wing_strips: int = 24,
           mass_model: str = "buildup", rotation: str = "inboard_up"):
     p = Problem("ga2p", "GA-2P whole-mission optimization (Clarke et al. Eq. 7)")
-    vehicle = Aircraft(ga2p(rotation), n_stations=n_stations, wing_strips=wing_strips, mass_model=mass_model)
+    vehicle = Aircraft(ga2p(rotation), n_stations=n_stations, wing_strips=wing_strips, mass_model=mass_model,
+                       design_point_constraints=not analysis)
     mission = ga_mission(vehicle, nodes=nodes, cruise_distance_m=cruise_distance_nmi * NMI,
                          reserve_cruise_distance_m=reserve_cruise_distance_nmi * NMI).build(p)
     p.minimize(mission.energy_used_J / KWH, unit="kWh", scale=10.0, name="battery energy used")

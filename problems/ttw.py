@@ -27,7 +27,7 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
           wing_strips: int = 16, mass_model: str = "buildup", rotation: str = "inboard_up"):
     p = Problem("ttw", "TTW tandem tilt-wing whole-mission optimization (Clarke et al. Eq. 7)")
     vehicle = Aircraft(ttw(rotation), n_stations=n_stations, n_azimuth=n_azimuth, wing_strips=wing_strips,
-                       mass_model=mass_model)
+                       mass_model=mass_model, design_point_constraints=not analysis)
     mission = evtol_mission(vehicle, nodes=nodes, cruise_distance_m=cruise_distance_nmi * NMI,
                             reserve_cruise_distance_m=reserve_cruise_distance_nmi * NMI).build(p)
     p.minimize(mission.energy_used_J / KWH, unit="kWh", scale=10.0, name="battery energy used")

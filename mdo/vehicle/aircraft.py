@@ -479,6 +479,8 @@ class Aircraft:
             "induced_drag_N": Output(r["D_i"], "N"), "parasite_drag_N": Output(D_parasite, "N"),
             "angle_of_attack_deg": Output(alpha / u.DEG, "deg"),
             "thrust_N": Output(n_rot * T1, "N", "total thrust"),
+            "thrust_power_W": Output(n_rot * (T1 * ca_r - H1 * sa_r) * V, "W",
+                                     "rotor force along the path times speed (useful propulsive power)"),
             "rotor_speed_rpm": Output(omega / u.RPM, "rpm"),
             "tip_mach": Output(tip_mach, "-"),
             "shaft_power_W": Output(P_shaft, "W", "total shaft power"),

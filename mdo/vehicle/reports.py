@@ -7,6 +7,7 @@ Written after a solve by ``add_vehicle_reports``:
 ``blade.csv``    the Adkins-Liebeck blade at the solution (``r_over_R,c_over_R,beta_deg``,
                  the geometry format ``mdo rotor sweep --geometry`` reads)
 ``design.json``  every design variable and the derived geometry (span, chords, rotor positions)
+``energy.md``    where the energy goes per segment: battery, shaft, propulsive, drag, climb
 and ``geometry.png`` (3-D view of the lattice, rotor disks and fixed wakes).  The
 figures made from these files (loading, rotor, mission, convergence) belong to
 ``mdo.plots`` (``mdo plot RUN_DIR``), which problem files register after this report.
@@ -156,6 +157,45 @@ def _plot_geometry(vehicle, mission, solution, out: Path, k: int):
     plt.close(fig)
 
 
+def energy_breakdown(vehicle, mission, solution) -> str:
+    """Where the battery energy goes, per segment: battery -> shaft (motors, ESCs, pack
+    losses) -> propulsive work (propeller efficiency) -> drag work (induced, parasite)
+    + potential + kinetic energy.  Integrals by each segment's Clenshaw-Curtis weights."""
+    from ..core.collocation import Collocation
+    ev = mission.evaluation.outputs
+    rows = {k: np.asarray(solution.value(ev[k].expr), float).ravel()
+            for k in ("battery_power_W", "shaft_power_W", "thrust_power_W", "drag_N", "induced_drag_N",
+                      "parasite_drag_N")}
+    V = np.asarray(mission.cond.speed_mps, float).ravel()
+    h = np.asarray(mission.cond.altitude_m, float).ravel()
+    m = float(_val(solution, vehicle.togw))
+    g0 = 9.80665
+    lines = [f"# {vehicle.name}: energy breakdown by segment", "",
+             "kWh; battery = chemical energy drawn; shaft = motor output; propulsive = rotor force along the "
+             "path x speed; drag = (induced + parasite) x speed; potential m g dh; kinetic m dV^2/2.", "",
+             "| segment | time (s) | battery | shaft | propulsive | drag: induced | drag: parasite | potential "
+             "| kinetic | chain eff. | prop. eff. |", "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
+    tot = np.zeros(7)
+    for sg in mission._segs:
+        idx = slice(sg.node0, sg.node0 + sg.n)
+        T = float(_val(solution, sg.duration))
+        w = Collocation(sg.n).weights * T
+        e = np.array([w @ rows["battery_power_W"][idx], w @ rows["shaft_power_W"][idx],
+                      w @ rows["thrust_power_W"][idx], w @ (rows["induced_drag_N"][idx] * V[idx]),
+                      w @ (rows["parasite_drag_N"][idx] * V[idx]),
+                      m * g0 * (h[idx][-1] - h[idx][0]), 0.5 * m * (V[idx][-1] ** 2 - V[idx][0] ** 2)]) / u.KWH
+        tot += e
+        eff = lambda a, b: f"{a / b:.3f}" if abs(b) > 1e-6 else "-"  # noqa: E731
+        lines.append(f"| {sg.segment.name} | {T:.0f} | " + " | ".join(f"{x:.3f}" for x in e)
+                     + f" | {eff(e[1], e[0])} | {eff(e[2], e[1])} |")
+    lines.append("| **total** | | " + " | ".join(f"**{x:.3f}**" for x in tot)
+                 + f" | {tot[1] / tot[0]:.3f} | {tot[2] / tot[1]:.3f} |")
+    lines += ["", f"Check: propulsive = drag + potential + kinetic to "
+              f"{abs(tot[2] - tot[3] - tot[4] - tot[5] - tot[6]) / max(abs(tot[2]), 1e-9) * 100:.2f} % "
+              "(the rest is the in-plane rotor force and quadrature).", ""]
+    return "\n".join(lines)
+
+
 def add_vehicle_reports(problem, vehicle, mission):
     """Register the vehicle's reports (mass, loading, blade, design, figures) on ``problem``."""
 
@@ -167,6 +207,7 @@ def add_vehicle_reports(problem, vehicle, mission):
                         {vehicle.group.name: design["tip_radius_m"]})
         (out / "mass.md").write_text(mass_table_markdown(vehicle.config, md))
         (out / "design.json").write_text(json.dumps(design, indent=1))
+        (out / "energy.md").write_text(energy_breakdown(vehicle, mission, solution))
         k = _write_loading(vehicle, mission, solution, out)
         _write_blade(vehicle, solution, out)
         _plot_geometry(vehicle, mission, solution, out, k)
