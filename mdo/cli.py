@@ -54,7 +54,8 @@ def _cmd_run(args) -> int:
     print(f"mdo: {problem.name} ({'analysis, design frozen' if args.analysis else 'optimization'}): "
           f"{size['variables']} variables, {size['constraints']} constraints -> {out}")
     sol = run_problem(problem, out, force=args.force, max_iter=args.max_iter,
-                      warm_start=args.warm_start, verbose=not args.quiet)
+                      warm_start=args.warm_start, verbose=not args.quiet,
+                      solve_options={"hessian": args.hessian})
     print(f"\nmdo: {problem.name}: {sol.status} after {sol.iterations} iterations, "
           f"{sol.wall_time_s:.1f} s; {sol.objective_name} = {sol.objective:.6g} {sol.objective_unit}")
     for k, v in sol.summary_values().items():
@@ -90,6 +91,8 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("--option", "-o", action="append", metavar="KEY=VALUE",
                      help="keyword passed to build(); VALUE parsed as JSON when it can be")
     run.add_argument("--quiet", action="store_true", help="no IPOPT log on the terminal (still in the file)")
+    run.add_argument("--hessian", choices=("exact", "limited-memory"), default="exact",
+                     help="exact Hessian of the Lagrangian (default) or IPOPT's L-BFGS approximation")
     run.set_defaults(func=_cmd_run)
 
     for modname in _DISCIPLINE_CLIS:
