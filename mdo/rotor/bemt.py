@@ -54,7 +54,8 @@ At the root the induced velocities and loads follow without dividing by ``Vx``:
 Non-axial inflow is handled by azimuth averaging: ``n_azimuth`` blade positions
 ``psi_j = 2 pi (j + 1/2)/n_azimuth`` (psi = 0 pointing downstream of the in-plane
 flow, psi = 90 deg the advancing blade), each an independent BEMT with
-``Vy = Omega r + V_inplane sin(psi)``; loads are averaged over the positions.
+``Vy = Omega r + V_inplane sin(psi)`` (held above ``Omega r / 4`` where the retreating
+blade would see reverse flow); loads are averaged over the positions.
 In-plane force (H, along the in-plane flow) and side force (Y, along
 ``n x e_p``, n the thrust axis) and hub moments follow from the tangential and
 normal loads resolved at each azimuth (see ``_rotor_totals``).  No skewed-wake
@@ -68,6 +69,7 @@ import math
 import casadi as ca
 import numpy as np
 
+from ..core.smooth import softplus
 from .geometry import station_layout
 from .sections import section_coefficients
 
@@ -204,7 +206,15 @@ def _elements(x: dict, n: int, n_azimuth: int):
     }
     vy = x["omega_radps"] * e["r"]
     if n_azimuth > 1:
-        vy = vy + x["v_inplane_mps"] * ca.DM(np.sin(psi))
+        # Reverse flow (the retreating blade's root in strongly edgewise flight, e.g. the
+        # tilt-wing's descent transition) has no root of the phi-residual in (0, pi/2]:
+        # the tangential velocity is held above a quarter of the rotational one
+        # (a softplus ramp of width 2 % of Omega r: exact to round-off where there is no
+        # reverse flow).  The reverse-flow region carries little load; this treats it
+        # as a lightly loaded forward-flow element.
+        vrot = vy
+        floor = 0.25 * vrot
+        vy = floor + softplus(vrot + x["v_inplane_mps"] * ca.DM(np.sin(psi)) - floor, 0.02 * vrot)
     e["vy"] = vy
     return r, dr, e
 
