@@ -39,6 +39,23 @@ def ipopt_optimality(log: Path) -> dict:
     return out
 
 
+def summary_line(n, lower, infeasible) -> str:
+    """The verdict: feasible perturbations that lowered the energy, and the ones whose
+    frozen mission could not be flown (their energy is that of the last iterate)."""
+    out = []
+    if lower:
+        out.append(f"**{len(lower)} feasible perturbation(s) inside the bounds lowered the energy** (by at "
+                   f"most {-min(r[5] for r in lower):.4f} kWh).")
+    else:
+        out.append(f"No feasible perturbation inside the bounds lowered the energy ({n} perturbations).")
+    if infeasible:
+        out.append(f"{len(infeasible)} perturbation(s) inside the bounds made the frozen mission infeasible "
+                   f"({', '.join(sorted({r[0] for r in infeasible}))}): the design sits on an implicit "
+                   "constraint of the mission (see the report of a failed solve for where); their energies "
+                   "are last iterates, not mission energies.")
+    return " ".join(out)
+
+
 def solve_frozen(module, solution_json, changes):
     p = module.build(analysis=True)
     p.warm_start(solution_json)
@@ -87,7 +104,9 @@ def main():
                              E - E0, outside))
                 print(f"{rows[-1][0]:32s} {x:10.4g} -> {new.flat[i]:10.4g}  {s.status:24s} {E:9.4f} kWh "
                       f"({E - E0:+.4f}){'  past a bound' if outside else ''}", flush=True)
-    lower = [r for r in rows if r[3] == "Solve_Succeeded" and r[5] < -1e-6 and not r[6]]
+    solved = ("Solve_Succeeded", "Feasible_Point_Found", "Solved_To_Acceptable_Level")
+    lower = [r for r in rows if r[3] in solved and r[5] < -1e-6 and not r[6]]
+    infeasible = [r for r in rows if r[3] not in solved and not r[6]]
     lines = [f"# {args.problem}: optimality check", "",
              f"IPOPT at the solution ({sol_path}): {opt.get('exit')}; dual infeasibility "
              f"{opt.get('Dual infeasibility', float('nan')):.2e}, constraint violation "
@@ -101,10 +120,7 @@ def main():
     for r in rows:
         lines.append(f"| {r[0]} | {r[1]:.5g} | {r[2]:.5g} | {r[3]} | {r[4]:.4f} | {r[5]:+.4f} | "
                      f"{'past an active bound' if r[6] else ''} |")
-    lines += ["", (f"**{len(lower)} perturbation(s) inside the bounds lowered the energy** (by at most "
-                   f"{-min(r[5] for r in lower):.4f} kWh)." if lower else
-                   "No perturbation inside the bounds lowered the energy: the solution is a local optimum "
-                   "with respect to every design variable.")]
+    lines += ["", summary_line(len(rows), lower, infeasible)]
     (run / "optimality.md").write_text("\n".join(lines) + "\n")
     print("\n".join(lines[-1:]))
 
