@@ -10,13 +10,12 @@ Options (``-o KEY=VALUE``): ``nodes`` per segment (6), ``cruise_distance_nmi`` (
 ``reserve_cruise_distance_nmi`` (5), ``n_stations`` (16), ``wing_strips`` (24),
 ``mass_model``, ``rotation``, ``coupling``.
 """
-from mdo.core.units import KWH, NMI
+from mdo.core.units import NMI
 from mdo.mission.profiles import ga_mission
 from mdo.nlp import Problem
-from mdo.plots import figure_report
+from mdo.studies import minimize_battery_energy
 from mdo.vehicle.aircraft import Aircraft
 from mdo.vehicle.catalog import ga8p
-from mdo.vehicle.reports import add_vehicle_reports
 
 
 def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 50.0,
@@ -27,9 +26,4 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
                        mass_model=mass_model, coupling=coupling, design_point_constraints=not analysis)
     mission = ga_mission(vehicle, nodes=nodes, cruise_distance_m=cruise_distance_nmi * NMI,
                          reserve_cruise_distance_m=reserve_cruise_distance_nmi * NMI).build(p)
-    p.minimize(mission.energy_used_J / KWH, unit="kWh", scale=10.0, name="battery energy used")
-    p.ipopt_options["max_iter"] = 500
-    p.add_report(mission.report)
-    add_vehicle_reports(p, vehicle, mission)
-    p.add_report(figure_report)
-    return p
+    return minimize_battery_energy(p, vehicle, mission)

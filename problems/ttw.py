@@ -13,13 +13,12 @@ Options (``-o KEY=VALUE``): ``nodes`` per segment (6), ``cruise_distance_nmi`` (
 ``reserve_cruise_distance_nmi`` (5), ``n_stations`` (16), ``n_azimuth`` (4, transition
 segments only), ``wing_strips`` (16 per wing), ``mass_model``, ``rotation``, ``coupling``.
 """
-from mdo.core.units import KWH, NMI
+from mdo.core.units import NMI
 from mdo.mission.profiles import evtol_mission
 from mdo.nlp import Problem
-from mdo.plots import figure_report
+from mdo.studies import minimize_battery_energy
 from mdo.vehicle.aircraft import Aircraft
 from mdo.vehicle.catalog import ttw
-from mdo.vehicle.reports import add_vehicle_reports
 
 
 def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 50.0,
@@ -31,9 +30,4 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
                        mass_model=mass_model, coupling=coupling, design_point_constraints=not analysis)
     mission = evtol_mission(vehicle, nodes=nodes, cruise_distance_m=cruise_distance_nmi * NMI,
                             reserve_cruise_distance_m=reserve_cruise_distance_nmi * NMI).build(p)
-    p.minimize(mission.energy_used_J / KWH, unit="kWh", scale=10.0, name="battery energy used")
-    p.ipopt_options["max_iter"] = 500
-    p.add_report(mission.report)
-    add_vehicle_reports(p, vehicle, mission)
-    p.add_report(figure_report)
-    return p
+    return minimize_battery_energy(p, vehicle, mission)
