@@ -227,6 +227,9 @@ class Problem:
         """Fix every design variable at its initial value (analysis mode)."""
         for v in self.variables.values():
             if v.design and not v.frozen:
+                if np.all(v.lower == v.upper):
+                    v.frozen = True   # fixed by its bounds already; a second equality would overconstrain
+                    continue
                 self.opti.subject_to(v.scaled == ca.DM(v.init / v.scale))
                 v.frozen = True
         self._analysis = True
