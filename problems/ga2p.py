@@ -10,7 +10,10 @@ solve.  ``--analysis`` freezes the design at Table 3's initial values.
 Options (``-o KEY=VALUE``): ``nodes`` per segment (6), ``cruise_distance_nmi`` (50),
 ``reserve_cruise_distance_nmi`` (5), ``n_stations`` (16), ``wing_strips`` (24),
 ``mass_model`` ("buildup" or "fixed"), ``rotation`` ("inboard_up"), ``coupling`` ("swirl",
-"local" or "freestream": how the wake enters the wing forces, see mdo/wake/README.md).
+"local" or "freestream": how the wake enters the wing forces, see mdo/wake/README.md),
+``approach_drag_area_m2`` (0: the propellers windmill for all the braking the base leg and
+final approach need, as in the paper; ``mdo.vehicle.catalog.GA_APPROACH_DRAG_AREA_M2`` =
+0.40 m^2 lets the pilot add gear and flap drag there, a control per node).
 """
 from mdo.core.units import NMI
 from mdo.mission.profiles import ga_mission
@@ -22,10 +25,12 @@ from mdo.vehicle.catalog import ga2p
 
 def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 50.0,
           reserve_cruise_distance_nmi: float = 5.0, n_stations: int = 16, wing_strips: int = 24,
-          mass_model: str = "buildup", rotation: str = "inboard_up", coupling: str = "swirl"):
+          mass_model: str = "buildup", rotation: str = "inboard_up", coupling: str = "swirl",
+          approach_drag_area_m2: float = 0.0):
     p = Problem("ga2p", "GA-2P whole-mission optimization (Clarke et al. Eq. 7)")
     vehicle = Aircraft(ga2p(rotation), n_stations=n_stations, wing_strips=wing_strips, mass_model=mass_model,
                        coupling=coupling, design_point_constraints=not analysis)
     mission = ga_mission(vehicle, nodes=nodes, cruise_distance_m=cruise_distance_nmi * NMI,
-                         reserve_cruise_distance_m=reserve_cruise_distance_nmi * NMI).build(p)
+                         reserve_cruise_distance_m=reserve_cruise_distance_nmi * NMI,
+                         approach_drag_area_m2=approach_drag_area_m2).build(p)
     return minimize_battery_energy(p, vehicle, mission)

@@ -30,6 +30,14 @@ choice is an option of the builders):
   descent's end, and the baseleg of SUAVE's X-57 missions).
 * **Downleg acceleration** is not given: default -0.2 m/s^2 (150 -> 100 mph in
   112 s, 6.3 km), gentle enough that drag alone never asks for reverse thrust.
+* **Base leg and final approach need drag.**  BL decelerates 135 -> 90 mph while
+  descending at 300 ft/min; drag alone does not supply that deceleration for a
+  clean airframe, so without a drag device the propellers must windmill, and how
+  much braking thrust a propeller design can give becomes a hidden constraint of
+  the design (it was active at the GA-2P optimum).  A pilot lowers the gear and
+  some flap here: option ``approach_drag_area_m2`` (default 0, none) gives BL and
+  FA the segment parameter ``drag_device_area_m2``, the largest extra flat-plate
+  drag area a vehicle may deploy there (a control per node, ``mdo.vehicle``).
 * **Transition accelerations** (TTW VT, CT No. 2, DT) are not given: defaults
   g/5 = 1.96 m/s^2 for the vertical transition and the level climb transition,
   -0.5 m/s^2 for the descent transition (the values of the SUAVE tilt-wing
@@ -56,6 +64,7 @@ choice is an option of the builders):
 """
 from __future__ import annotations
 
+from ..core.errors import InputError
 from ..core.units import DEG, FT, FT_PER_MIN, MPH, NMI
 from .segments import (
     ConstantAccelerationConstantAltitude,
@@ -112,14 +121,18 @@ def _nodes(nodes, name):
 
 def ga_segments(*, cruise_distance_m: float = 50 * NMI, reserve_cruise_distance_m: float = 5 * NMI,
                 descent_end_speed_mps: float = 150 * MPH, downleg_acceleration_mps2: float = -0.2,
-                nodes=None) -> list:
+                approach_drag_area_m2: float = 0.0, nodes=None) -> list:
     """The GA profile of Table 5 (DER ... FA), resolved as described in the module docstring.
 
     ``nodes`` is None (the mission default), a number for every segment, or a
-    dict segment symbol -> number.
+    dict segment symbol -> number.  ``approach_drag_area_m2`` > 0 lets the vehicle
+    deploy up to that much flat-plate drag area (gear, flap) on BL and FA.
     """
     ft, mph, fpm = FT, MPH, FT_PER_MIN
     n = lambda s: _nodes(nodes, s)  # noqa: E731
+    if not (approach_drag_area_m2 >= 0.0 and approach_drag_area_m2 < 10.0):
+        raise InputError("approach_drag_area_m2", f"must be in [0, 10) m^2, got {approach_drag_area_m2!r}")
+    approach = {"drag_device_area_m2": float(approach_drag_area_m2)} if approach_drag_area_m2 > 0 else None
     return [
         LinearSpeedConstantRate("DER", altitude_start_m=0.0, altitude_end_m=50 * ft, speed_start_mps=91 * mph,
                                 speed_end_mps=100 * mph, climb_rate_mps=600 * fpm, nodes=n("DER"),
@@ -141,9 +154,9 @@ def ga_segments(*, cruise_distance_m: float = 50 * NMI, reserve_cruise_distance_
         LinearSpeedConstantRate("RD", altitude_end_m=1000 * ft, speed_end_mps=135 * mph, climb_rate_mps=-300 * fpm,
                                 nodes=n("RD"), description="reserve descent"),
         LinearSpeedConstantRate("BL", altitude_end_m=500 * ft, speed_end_mps=90 * mph, climb_rate_mps=-300 * fpm,
-                                nodes=n("BL"), description="baseleg"),
+                                nodes=n("BL"), parameters=approach, description="baseleg"),
         LinearSpeedConstantRate("FA", altitude_end_m=0.0, speed_end_mps=78 * mph, climb_rate_mps=-300 * fpm,
-                                nodes=n("FA"), description="final approach"),
+                                nodes=n("FA"), parameters=approach, description="final approach"),
     ]
 
 

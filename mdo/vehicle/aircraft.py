@@ -155,7 +155,9 @@ class Aircraft:
         self.design_point_constraints = bool(design_point_constraints)
         self.misc_drag_fraction = float(misc_drag_fraction)
         self.bounds = bounds or DesignBounds()
-        self.parameters = {"wing_mounted_angle_rad": 0.0, "pitch_command_rad": 0.0}
+        # drag_device_area_m2: the most flat-plate area (gear, flap) the pilot may add at a
+        # node (segment parameter; 0 = none); its deployment is a control of those nodes
+        self.parameters = {"wing_mounted_angle_rad": 0.0, "pitch_command_rad": 0.0, "drag_device_area_m2": 0.0}
         self.group = config.rotor_groups[0]
         self.section = section(self.group.airfoil.lower().replace("_", ""))
         self.powertrain = paper_powertrain(config.name, rated_rpm=self.group.design_rpm)
@@ -445,7 +447,8 @@ class Aircraft:
             ff = form_factor_wing(f.thickness_to_chord, mach=ca.sqrt(mach * mach + 1e-4),
                                   sweep_max_thickness=math.radians(f.sweep_quarter_chord_deg))
             D_fin = D_fin + q * cf * ff * 2.04 * f.area_m2
-        D_parasite = (pd["D_p"] + D_stall + D_bodies + D_fin) * (1.0 + self.misc_drag_fraction)
+        D_device, deploy = self._drag_device(nodes, q)
+        D_parasite = (pd["D_p"] + D_stall + D_bodies + D_fin) * (1.0 + self.misc_drag_fraction) + D_device
         D = r["D_i"] + D_parasite
         L = r["L"] + L_stall
         # --- forces in the path frame (x along the velocity, z normal)
@@ -477,6 +480,8 @@ class Aircraft:
             "CDi": Output(r["CDi"], "-", "induced drag coefficient (Trefftz plane)"),
             "lift_N": Output(L, "N"), "drag_N": Output(D, "N"),
             "induced_drag_N": Output(r["D_i"], "N"), "parasite_drag_N": Output(D_parasite, "N"),
+            "drag_device_drag_N": Output(D_device, "N", "gear/flap drag deployed on approach (in parasite)"),
+            "drag_device_deployment": Output(deploy, "-", "fraction of the segment's drag_device_area_m2"),
             "angle_of_attack_deg": Output(alpha / u.DEG, "deg"),
             "thrust_N": Output(n_rot * T1, "N", "total thrust"),
             "thrust_power_W": Output(n_rot * (T1 * ca_r - H1 * sa_r) * V, "W",
@@ -496,6 +501,25 @@ class Aircraft:
         return NodeEvaluation(mass_kg=self.togw, force_along_path_N=F_t, force_normal_N=F_n, residuals=residuals,
                               force_scale_N=self.togw_baseline_kg * G0,
                               state_derivatives={"state_of_charge": po["soc_rate_per_s"]}, outputs=out)
+
+    def _drag_device(self, nodes, q):
+        """Gear/flap drag where the segment allows it (``drag_device_area_m2`` > 0):
+        ``D = q A_max delta`` with the deployment ``delta`` in [0, 1] a control of those
+        nodes only (elsewhere it would be a free variable with no effect).  Its lift
+        change is neglected.  Returns (drag row, deployment row)."""
+        K = nodes.size
+        area = _num(nodes.parameters.get("drag_device_area_m2", _row(0.0, K))).ravel()
+        active = np.flatnonzero(area > 0.0)
+        if active.size == 0:
+            return 0.0 * q, ca.DM.zeros(1, K)
+        delta = self._problem.variable(
+            "drag_device_deployment", (1, active.size), unit="-", scale=1.0, lower=0.0, upper=1.0, init=0.0,
+            description="gear/flap deployment on approach (fraction of drag_device_area_m2)",
+            labels=[nodes.labels[k] for k in active])
+        spread = ca.DM.triplet(list(range(active.size)), [int(k) for k in active], ca.DM.ones(active.size),
+                               active.size, K)
+        deploy = ca.densify(ca.mtimes(delta, spread))
+        return q * _row(area) * deploy, deploy
 
     def stall_limits(self, airfoil: str) -> tuple:
         """(alpha0, lift slope, cl_min, cl_max) of a section at Re 1e6 (numbers, cached)."""

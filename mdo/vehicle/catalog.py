@@ -35,7 +35,7 @@ from ..core import units as u
 from ..core.atmosphere import speed_of_sound
 from .config import BatteryConfig, FuselageConfig, RotorGroupConfig, VehicleConfig, WingConfig
 
-__all__ = ["ga2p", "ga8p", "ttw", "VEHICLES", "design_rpm_for_tip_mach"]
+__all__ = ["ga2p", "ga8p", "ttw", "VEHICLES", "design_rpm_for_tip_mach", "GA_APPROACH_DRAG_AREA_M2"]
 
 GA_SECTIONS = (0.0, 0.25, 0.5, 0.75, 1.0)
 
@@ -48,6 +48,15 @@ GA_SECTIONS = (0.0, 0.25, 0.5, 0.75, 1.0)
 # eVTOL motors; it is a calibration, stated as such.
 GA_AIRFRAME_CALIBRATION = 1.16
 TTW_AIRFRAME_CALIBRATION = 0.70
+
+# Drag the GA airplanes may add on the base leg and final approach (gear down, partial
+# flap), as extra equivalent flat-plate area.  Not in the paper.  Rogers' level-flight
+# tests of an E33A Bonanza (a 3300 lb retractable single, wing 181 ft^2; D. F. Rogers,
+# "Flight determination of partial span flap parasite drag with flap deflection", US
+# Naval Academy, Table 2) measured +4.29 ft^2 (0.40 m^2) for gear down and cowl flaps
+# open, +6.52 ft^2 with 20 deg of flap as well.  The P2006T/X-57 airframe has a
+# retractable gear of the same class; 0.40 m^2 is ΔCD 0.027 on the X-57's 14.76 m^2.
+GA_APPROACH_DRAG_AREA_M2 = 0.40
 
 
 def design_rpm_for_tip_mach(radius_m, speed_mps, altitude_m, tip_mach=0.6) -> float:
