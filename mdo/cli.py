@@ -16,6 +16,7 @@ import importlib
 import json
 import sys
 import traceback
+from pathlib import Path
 
 from .core.errors import InputError
 
@@ -41,20 +42,44 @@ def _parse_option(text: str):
 
 
 def _cmd_run(args) -> int:
-    from .nlp.run import RunError, default_out_dir, load_problem_file, run_problem
+    from .nlp.run import check_out_dir, default_out_dir, load_problem_file
 
     if args.max_iter is not None and args.max_iter < 0:
         raise InputError("--max-iter", f"must be >= 0, got {args.max_iter}")
     options = dict(_parse_option(o) for o in (args.option or []))
-    out = args.out or default_out_dir(args.problem, analysis=args.analysis)
-    from .nlp.run import check_out_dir
+    out = Path(args.out or default_out_dir(args.problem, analysis=args.analysis))
     check_out_dir(out, args.force)  # refuse before spending time on the build
     problem = load_problem_file(args.problem, analysis=args.analysis, options=options)
+    warm_start = args.warm_start
+    # DESIGN rule 7, continuation: an optimization with design variables first flies the
+    # baseline (design frozen) and starts from that converged mission
+    staged = (not args.analysis and warm_start is None and not args.no_baseline
+              and any(v.design and not v.frozen for v in problem.variables.values()))
+    if staged:
+        base_out = out / "analysis"
+        check_out_dir(base_out, args.force)
+        baseline = load_problem_file(args.problem, analysis=True, options=options)
+        code, _ = _solve_stage(baseline, base_out, args, None, "stage 1 of 2: baseline analysis, design frozen")
+        del baseline
+        if code != 0:
+            print(f"mdo: the baseline analysis did not converge, so the optimization was not started; "
+                  f"fix the baseline or pass --no-baseline", file=sys.stderr)
+            return code
+        warm_start = base_out / "solution.json"
+    what = "analysis, design frozen" if args.analysis else "optimization"
+    if staged:
+        what = f"stage 2 of 2: {what}, from the baseline"
+    code, _ = _solve_stage(problem, out, args, warm_start, what)
+    return code
+
+
+def _solve_stage(problem, out, args, warm_start, what) -> tuple:
+    from .nlp.run import run_problem
+
     size = problem.size()
-    print(f"mdo: {problem.name} ({'analysis, design frozen' if args.analysis else 'optimization'}): "
-          f"{size['variables']} variables, {size['constraints']} constraints -> {out}")
+    print(f"mdo: {problem.name} ({what}): {size['variables']} variables, {size['constraints']} constraints -> {out}")
     sol = run_problem(problem, out, force=args.force, max_iter=args.max_iter,
-                      warm_start=args.warm_start, verbose=not args.quiet,
+                      warm_start=warm_start, verbose=not args.quiet,
                       solve_options={"hessian": args.hessian})
     print(f"\nmdo: {problem.name}: {sol.status} after {sol.iterations} iterations, "
           f"{sol.wall_time_s:.1f} s; {sol.objective_name} = {sol.objective:.6g} {sol.objective_unit}")
@@ -64,13 +89,13 @@ def _cmd_run(args) -> int:
     if sol.status == "Interrupted_By_User":
         print(f"mdo: interrupted; log and last iterate kept in {out}", file=sys.stderr)
         print(sol.violation_report(), file=sys.stderr)
-        return 130
+        return 130, sol
     if not sol.success:
         print(f"mdo: solve did not converge ({sol.status}); log and last iterate kept in {out}",
               file=sys.stderr)
         print(sol.violation_report(), file=sys.stderr)
-        return 1
-    return 0
+        return 1, sol
+    return 0, sol
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -85,6 +110,10 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("--out", help="run folder (default results/<problem>/, or .../analysis/)")
     run.add_argument("--max-iter", type=int, help="IPOPT iteration limit")
     run.add_argument("--warm-start", metavar="FILE", help="solution.json of an earlier run")
+    run.add_argument("--no-baseline", action="store_true",
+                     help="optimize straight from the problem's initial guess (default for a problem with "
+                          "design variables: first solve the baseline analysis into OUT/analysis, then "
+                          "warm-start the optimization from it)")
     run.add_argument("--analysis", action="store_true",
                      help="freeze the design variables at their initial values; solve the mission only")
     run.add_argument("--force", action="store_true", help="replace an existing run folder")

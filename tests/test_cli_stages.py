@@ -1,0 +1,52 @@
+"""`mdo run` on an optimization: the baseline analysis first, then the optimization
+warm-started from it (DESIGN rule 7), in one command."""
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+POLAR = ROOT / "problems" / "polar_ga_mission.py"
+
+
+def _mdo(*args):
+    return subprocess.run([sys.executable, "-m", "mdo.cli", *map(str, args)], capture_output=True, text=True)
+
+
+def _summary(folder):
+    return json.loads((folder / "summary.json").read_text())
+
+
+def test_optimization_runs_its_baseline_first(tmp_path):
+    out = tmp_path / "run"
+    r = _mdo("run", POLAR, "-o", "design_wing_area=true", "--out", out, "--quiet")
+    assert r.returncode == 0, r.stderr
+    assert "stage 1 of 2" in r.stdout and "stage 2 of 2" in r.stdout
+    base, opt = _summary(out / "analysis"), _summary(out)
+    assert base["status"] == opt["status"] == "Solve_Succeeded"
+    # the baseline is the fixed-wing-area mission; the optimum resizes the wing and uses less
+    assert opt["battery_energy_kWh"] < base["battery_energy_kWh"] - 1.0
+    # the analysis folder is the same as `--analysis` gives
+    r2 = _mdo("run", POLAR, "-o", "design_wing_area=true", "--analysis", "--out", tmp_path / "an", "--quiet")
+    assert r2.returncode == 0, r2.stderr
+    assert abs(_summary(tmp_path / "an")["battery_energy_kWh"] - base["battery_energy_kWh"]) < 1e-6
+
+
+def test_no_baseline_and_problems_without_design_run_one_stage(tmp_path):
+    r = _mdo("run", POLAR, "-o", "design_wing_area=true", "--out", tmp_path / "a", "--quiet", "--no-baseline")
+    assert r.returncode == 0, r.stderr
+    assert not (tmp_path / "a" / "analysis").exists() and "stage" not in r.stdout
+    r = _mdo("run", POLAR, "--out", tmp_path / "b", "--quiet")   # no design variables
+    assert r.returncode == 0, r.stderr
+    assert not (tmp_path / "b" / "analysis").exists()
+
+
+def test_an_earlier_baseline_is_not_overwritten_unasked(tmp_path):
+    out = tmp_path / "run"
+    (out / "analysis").mkdir(parents=True)
+    (out / "analysis" / "summary.json").write_text("{}")
+    r = _mdo("run", POLAR, "-o", "design_wing_area=true", "--out", out, "--quiet")
+    assert r.returncode == 2
+    assert "--force" in r.stderr and "analysis" in r.stderr
+    assert (out / "analysis" / "summary.json").read_text() == "{}"
+    assert not (out / "summary.json").exists()
