@@ -13,7 +13,9 @@ Options (``-o KEY=VALUE``): ``nodes`` per segment (6), ``cruise_distance_nmi`` (
 "local" or "freestream": how the wake enters the wing forces, see mdo/wake/README.md),
 ``approach_drag_area_m2`` (0: the propellers windmill for all the braking the base leg and
 final approach need, as in the paper; ``mdo.vehicle.catalog.GA_APPROACH_DRAG_AREA_M2`` =
-0.40 m^2 lets the pilot add gear and flap drag there, a control per node).
+0.40 m^2 lets the pilot add gear and flap drag there, a control per node), ``wake_samples``
+(5: points across each lattice strip at which the propeller wake is averaged; 1 = at the
+control point only, which makes the energy ripple with the rotor position).
 """
 from mdo.core.units import NMI
 from mdo.mission.profiles import ga_mission
@@ -26,10 +28,11 @@ from mdo.vehicle.catalog import ga2p
 def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 50.0,
           reserve_cruise_distance_nmi: float = 5.0, n_stations: int = 16, wing_strips: int = 24,
           mass_model: str = "buildup", rotation: str = "inboard_up", coupling: str = "swirl",
-          approach_drag_area_m2: float = 0.0):
+          approach_drag_area_m2: float = 0.0, wake_samples: int = 5):
     p = Problem("ga2p", "GA-2P whole-mission optimization (Clarke et al. Eq. 7)")
     vehicle = Aircraft(ga2p(rotation), n_stations=n_stations, wing_strips=wing_strips, mass_model=mass_model,
-                       coupling=coupling, design_point_constraints=not analysis)
+                       coupling=coupling, design_point_constraints=not analysis,
+                       wake_samples=wake_samples)
     mission = ga_mission(vehicle, nodes=nodes, cruise_distance_m=cruise_distance_nmi * NMI,
                          reserve_cruise_distance_m=reserve_cruise_distance_nmi * NMI,
                          approach_drag_area_m2=approach_drag_area_m2).build(p)

@@ -8,7 +8,7 @@ the optimization starts infeasible.
 
 Options (``-o KEY=VALUE``): ``nodes`` per segment (6), ``cruise_distance_nmi`` (50),
 ``reserve_cruise_distance_nmi`` (5), ``n_stations`` (16), ``wing_strips`` (24),
-``mass_model``, ``rotation``, ``coupling``, ``approach_drag_area_m2`` (as GA-2P).
+``mass_model``, ``rotation``, ``coupling``, ``approach_drag_area_m2``, ``wake_samples`` (as GA-2P).
 """
 from mdo.core.units import NMI
 from mdo.mission.profiles import ga_mission
@@ -21,10 +21,11 @@ from mdo.vehicle.catalog import ga8p
 def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 50.0,
           reserve_cruise_distance_nmi: float = 5.0, n_stations: int = 16, wing_strips: int = 24,
           mass_model: str = "buildup", rotation: str = "inboard_up", coupling: str = "swirl",
-          approach_drag_area_m2: float = 0.0):
+          approach_drag_area_m2: float = 0.0, wake_samples: int = 5):
     p = Problem("ga8p", "GA-8P whole-mission optimization (Clarke et al. Eq. 7)")
     vehicle = Aircraft(ga8p(rotation), free=("rotor", "wing"), n_stations=n_stations, wing_strips=wing_strips,
-                       mass_model=mass_model, coupling=coupling, design_point_constraints=not analysis)
+                       mass_model=mass_model, coupling=coupling, design_point_constraints=not analysis,
+                       wake_samples=wake_samples)
     mission = ga_mission(vehicle, nodes=nodes, cruise_distance_m=cruise_distance_nmi * NMI,
                          reserve_cruise_distance_m=reserve_cruise_distance_nmi * NMI,
                          approach_drag_area_m2=approach_drag_area_m2).build(p)

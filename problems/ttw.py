@@ -11,7 +11,7 @@ Table 3's initial values.
 
 Options (``-o KEY=VALUE``): ``nodes`` per segment (6), ``cruise_distance_nmi`` (50),
 ``reserve_cruise_distance_nmi`` (5), ``n_stations`` (16), ``n_azimuth`` (4, transition
-segments only), ``wing_strips`` (16 per wing), ``mass_model``, ``rotation``, ``coupling``.
+segments only), ``wing_strips`` (16 per wing), ``mass_model``, ``rotation``, ``coupling``, ``wake_samples`` (5, as GA-2P).
 """
 from mdo.core.units import NMI
 from mdo.mission.profiles import evtol_mission
@@ -24,10 +24,11 @@ from mdo.vehicle.catalog import ttw
 def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 50.0,
           reserve_cruise_distance_nmi: float = 5.0, n_stations: int = 16, n_azimuth: int = 4,
           wing_strips: int = 16, mass_model: str = "buildup", rotation: str = "inboard_up",
-          coupling: str = "swirl"):
+          coupling: str = "swirl", wake_samples: int = 5):
     p = Problem("ttw", "TTW tandem tilt-wing whole-mission optimization (Clarke et al. Eq. 7)")
     vehicle = Aircraft(ttw(rotation), n_stations=n_stations, n_azimuth=n_azimuth, wing_strips=wing_strips,
-                       mass_model=mass_model, coupling=coupling, design_point_constraints=not analysis)
+                       mass_model=mass_model, coupling=coupling, design_point_constraints=not analysis,
+                       wake_samples=wake_samples)
     mission = evtol_mission(vehicle, nodes=nodes, cruise_distance_m=cruise_distance_nmi * NMI,
                             reserve_cruise_distance_m=reserve_cruise_distance_nmi * NMI).build(p)
     return minimize_battery_energy(p, vehicle, mission)

@@ -120,7 +120,7 @@ class Aircraft:
                  coupling: str = "swirl", mass_model: str = "buildup", powertrain_limits: bool = False,
                  misc_drag_fraction: float = 0.05, bounds: DesignBounds | None = None,
                  positions_free: bool | None = None, design_point_constraints: bool = True,
-                 wing_stall: bool | None = None, slipstream_breaks: bool = False):
+                 wing_stall: bool | None = None, slipstream_breaks: bool = False, wake_samples: int = 5):
         """See the class docstring; ``design_point_constraints=False`` leaves out the
         tip-Mach and disk-clearance constraints (analysis of a violating design)."""
         if coupling not in ("swirl", "freestream", "local"):
@@ -151,6 +151,14 @@ class Aircraft:
         # The default is a fixed cosine lattice; the averaged wake is smooth (cored
         # sheets), so lift and drag stay smooth in the rotor position.
         self.slipstream_breaks = bool(slipstream_breaks)
+        # wake velocity averaged over this many points across each strip (1: at the
+        # control point).  At the control point alone the mission energy ripples by
+        # +-0.35 kWh (GA-2P) as a rotor's slipstream edge crosses the strips, and the
+        # optimizer parks the rotor in a ripple trough; 5 samples leave +-0.01 kWh
+        # (tests/bench/position_sweep.py; mdo.wake.mean.strip_averaged_influence)
+        if int(wake_samples) < 1:
+            raise InputError("wake_samples", f"must be >= 1, got {wake_samples}")
+        self.wake_samples = int(wake_samples)
         # tip Mach and disk clearance; off for the analysis of a design that violates them (GA-8P)
         self.design_point_constraints = bool(design_point_constraints)
         self.misc_drag_fraction = float(misc_drag_fraction)
@@ -347,7 +355,8 @@ class Aircraft:
                        mach_ref=0.2, lift_velocity=lift_velocity)
         self.rotors = self._rotors(rotor_pos, d["R"])
         self.rotor_positions = rotor_pos
-        self.influences = wake_influences(self.vlm.geometry["cp"], self.rotors)
+        self.influences = wake_influences(self.vlm.geometry["cp"], self.rotors, spans=self.vlm.geometry["lb"],
+                                          samples=self.wake_samples)
         self.S_ref = S_ref
         # non-lifting bodies (Raymer build-up) and the fin
         f = cfg.fuselage

@@ -32,7 +32,7 @@ import numpy as np
 from ..core.errors import InputError
 from .helical import DEFAULT_ROTATIONS, DEFAULT_STEPS_PER_ROTATION, full_wake_velocity
 from .frames import rotor_frame
-from .mean import apply_influence, influence
+from .mean import apply_influence, influence, strip_averaged_influence
 
 __all__ = ["wake_influences", "external_velocity", "apply_influences", "wake_convection_speed"]
 
@@ -43,9 +43,14 @@ def wake_convection_speed(v_axial_mps, va_mean_mps):
     return v_axial_mps + va_mean_mps
 
 
-def wake_influences(points, rotors):
+def wake_influences(points, rotors, spans=None, samples: int = 1):
     """Per rotor, the averaged wake's factored influence at ``points`` (3×M): see
-    mean.influence_function.  Evaluate once per design; reuse for every node."""
+    mean.influence_function.  Evaluate once per design; reuse for every node.
+    With ``spans`` (3×M, each strip's spanwise extent through its point) and
+    ``samples`` > 1, the velocity is averaged across each strip
+    (:func:`mdo.wake.mean.strip_averaged_influence`)."""
+    if spans is not None and samples > 1:
+        return [strip_averaged_influence(points, spans, r, samples) for r in rotors]
     return [influence(points, r) for r in rotors]
 
 
@@ -86,7 +91,7 @@ def apply_influences(influences, gamma, omega_radps, v_wake_mps, axial_factor=1.
     ``axial_factor`` scales each rotor's velocity component along its own axis."""
     total = None
     for infl, g, om, vw in zip(influences, gamma, omega_radps, v_wake_mps):
-        n = infl[0].shape[1]
+        n = (infl["Bx"] if isinstance(infl, dict) else infl[0]).shape[1]
         g = _as_nk(g, n, "gamma")
         k = g.shape[1]
         ratio = _as_row(om, k, "omega_radps") / _as_row(vw, k, "v_wake_mps")

@@ -61,8 +61,8 @@ import numpy as np
 from ..core.errors import InputError
 from .frames import rotor_frame
 
-__all__ = ["unit_cylinder", "influence_function", "influence", "apply_influence", "mean_wake_velocity",
-           "jump_matrix", "TABLE_CORE_REL"]
+__all__ = ["unit_cylinder", "influence_function", "influence", "strip_averaged_influence", "apply_influence",
+           "mean_wake_velocity", "jump_matrix", "TABLE_CORE_REL"]
 
 _DATA = Path(__file__).with_name("data")
 TABLE_CORE_REL = 0.05
@@ -167,8 +167,13 @@ def influence_function(n_points: int, n_stations: int, blades: int, core_rel: fl
 
 def apply_influence(infl, gamma_over_p, gamma, axial_factor=1.0):
     """Velocity components (vx, vy, vz), each M×K, from the factored influence ``infl``
-    (the 6 outputs of :func:`influence_function`) and per-node Γ/p and Γ (N×K).
+    (the 6 outputs of :func:`influence_function`, or a :func:`strip_averaged_influence`)
+    and per-node Γ/p and Γ (N×K).
     ``axial_factor`` scales the component along the rotor axis (1: the wake as is)."""
+    if isinstance(infl, dict):   # strip-averaged: the directions are folded into the matrices
+        ua = ca.mtimes(infl["Bx"], gamma_over_p)
+        return tuple(axial_factor * infl["e_a"][c] * ua + ca.mtimes(infl["Br"][c], gamma_over_p)
+                     + ca.mtimes(infl["Bt"][c], gamma) for c in range(3))
     ax, ar, at, e_a, rvec, tdir = infl
     ua = axial_factor * ca.mtimes(ax, gamma_over_p)            # M×K
     ur = ca.mtimes(ar, gamma_over_p)
@@ -198,6 +203,33 @@ def influence(points, rotor):
     f = influence_function(pts.shape[1], rotor.n_stations, rotor.blades, rotor.core_rel)
     return f(pts, _col(rotor.center), _col(rotor.axis), rotor.radius_m,
              ca.DM(np.asarray(rotor.s_edges)), rotor.spin)
+
+
+def strip_averaged_influence(points, spans, rotor, samples: int):
+    """The factored influence averaged over each lattice strip's span.
+
+    A control point sees the wake at one spanwise station, but its strip's flow
+    tangency stands for the whole strip: when a slipstream edge (core 0.05 R, a few
+    cm) crosses a control point, that strip's loading jumps, and the mission energy
+    ripples with the period of the lattice as a rotor moves (measured on GA-2P: ±0.35
+    kWh over 0.03 of the semispan, ``tests/bench/position_sweep.py``).  Here the
+    velocity is the mean over ``samples`` points p + ((s + ½)/S − ½) l, s = 0..S−1,
+    spread along ``spans`` l (3×M, e.g. each panel's bound-vortex vector), a midpoint
+    rule across the strip.  Returns a dict for :func:`apply_influence`: the averages
+    of the three velocity components with the point-dependent directions folded in,
+    ``Bx`` (times e_a), ``Br[c]``, ``Bt[c]`` (M×N each).
+    """
+    pts, spans = _pts(points), _pts(spans)
+    m, S = pts.shape[1], int(samples)
+    if S < 1:
+        raise InputError("samples", f"must be >= 1, got {samples}")
+    sub = ca.horzcat(*[pts + ((s + 0.5) / S - 0.5) * spans for s in range(S)])   # 3×(M·S), sample-major
+    ax, ar, at, e_a, rvec, tdir = influence(sub, rotor)
+    W = ca.repmat(ca.DM.eye(m), 1, S) / S                                        # M×(M·S) mean
+    n = ax.shape[1]
+    return {"e_a": e_a, "Bx": ca.mtimes(W, ax),
+            "Br": [ca.mtimes(W, ca.repmat(rvec[c, :].T, 1, n) * ar) for c in range(3)],
+            "Bt": [ca.mtimes(W, ca.repmat(tdir[c, :].T, 1, n) * at) for c in range(3)]}
 
 
 def mean_wake_velocity(points, rotor, gamma, omega_radps, v_wake_mps):

@@ -57,16 +57,19 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("problem", nargs="?", default="ga2p")
     ap.add_argument("--analytic-section", action="store_true")
+    ap.add_argument("--option", "-o", action="append", default=[], metavar="KEY=VALUE",
+                    help="keyword for the problem's build()")
     ap.add_argument("--groups", action="store_true", help="also time each constraint group's Hessian alone")
     ap.add_argument("--without", action="append", default=[], metavar="VAR[,VAR...]",
                     help="also time the Hessian w.r.t. all variables but these (repeatable)")
     a = ap.parse_args()
     if a.analytic_section:
         _analytic_section()
+    from mdo.cli import _parse_option
     from mdo.nlp import load_problem_file
 
     t = time.perf_counter()
-    prob = load_problem_file(ROOT / "problems" / f"{a.problem}.py")
+    prob = load_problem_file(ROOT / "problems" / f"{a.problem}.py", options=dict(_parse_option(o) for o in a.option))
     print(f"{a.problem}: build {time.perf_counter() - t:.1f} s")
     o = prob.opti
     x0 = np.array(o.debug.value(o.x, o.initial())).ravel()
