@@ -113,6 +113,10 @@ class Aircraft:
     mass_model : ``"buildup"`` (gross weight follows the design) or ``"fixed"``
         (the baseline build-up's gross weight, as the paper's optimization keeps it).
     powertrain_limits : add throttle <= 1, cell current and cell voltage limits.
+    wake_samples : points across each lattice strip over which the propeller wake is
+        averaged (default 5; 1 = at the control point, which makes the energy ripple
+        with the rotor position, see mdo/README.md).
+    Segments may set ``drag_device_area_m2`` (gear/flap drag on approach, a control).
     """
 
     def __init__(self, config: VehicleConfig, *, free=("rotor", "wing", "positions"), n_stations: int = 16,
