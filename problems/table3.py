@@ -49,9 +49,10 @@ def _load(problem):
 def main():
     lines = ["# Table 3: the paper's optimizations and ours", "",
              "Paper: Clarke, Erhard & Alonso, Table 3 (SUAVE, sequential optimizer, mission re-solved at every "
-             "design).  Ours: `mdo run problems/<p>.py --analysis` (initial) and `mdo run problems/<p>.py "
-             "--warm-start results/<p>/analysis/solution.json` (optimized) — design and mission in one IPOPT "
-             "solve.  Status and iterations are IPOPT's.", ""]
+             "design).  Ours: `mdo run problems/<p>.py`, which solves the baseline analysis with the design "
+             "frozen (initial, `results/<p>/analysis/`) and then the optimization warm-started from it "
+             "(optimized, `results/<p>/`) — design and mission in one IPOPT solve.  Status and iterations "
+             "are IPOPT's.", ""]
     for p, ref in PAPER.items():
         got = _load(p)
         lines += [f"## {NAMES[p]}", ""]
