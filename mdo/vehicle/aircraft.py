@@ -34,7 +34,7 @@ axes with x aft, y starboard, z up (``mdo.wing``).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import casadi as ca
 import numpy as np
@@ -44,15 +44,14 @@ from ..core.atmosphere import atmosphere
 from ..core.errors import InputError
 from ..core.smooth import smooth_max, smooth_min
 from ..powertrain import paper_powertrain
-from ..rotor import (PHI_MAX_RAD, PHI_MIN_RAD, adkins_liebeck, add_adkins_liebeck, analyze_inputs,
+from ..rotor import (PHI_MAX_RAD, PHI_MIN_RAD, adkins_liebeck, add_adkins_liebeck,
                      bemt_function, section)
-from ..rotor.geometry import station_layout
 from ..wake import WakeRotor, apply_influences, spin_for, wake_influences
 from ..wing import VLM, Body, body_drag, constant_area, profile_drag, trapezoid
 from ..wing.drag import form_factor_wing, skin_friction
 from .base import G0, NodeEvaluation, Output, ResidualGroup, State, Unknown
 from .config import VehicleConfig, WingConfig
-from .mass import MassDesign, mass_terms, solve_togw, total_mass
+from .mass import MassDesign, solve_togw, total_mass
 
 __all__ = ["Aircraft", "DesignBounds"]
 
@@ -288,7 +287,7 @@ class Aircraft:
 
     def _wing_surfaces(self, d, numeric: bool):
         """VLM surfaces from the design dict ``d`` (MX) or from the baseline (numeric)."""
-        cfg, g = self.config, self.group
+        g = self.group
         surfaces, rotor_pos = [], []
         eta_r = d["eta"]
         R = d["R"]
@@ -564,7 +563,6 @@ class Aircraft:
         Vl = r["V_local"]
         c = g["strip_chord"].T
         w = g["strip_width"].T
-        q_inf = 0.5 * rho * V * V
         dL = 0.0
         dD = 0.0
         names = [str(a) for a in vlm.strip_airfoil]
@@ -632,148 +630,7 @@ class Aircraft:
         return out, groups
 
     # ------------------------------------------------------------------ guesses
-    def _numeric_design(self):
-        g = self.group
-        d = {"R": g.radius_m, "eta": np.asarray(g.span_eta, float), "wings": {}}
-        for w in self.lifting_wings:
-            d["wings"][w.name] = {"span": w.span_m, "taper": w.taper,
-                                  "twist": np.radians(np.asarray(w.twist_deg, float))}
-        return d
-
     def initial_guess(self, nodes) -> dict:
-        """Physics-based guesses at the baseline design: lattice lift for the angle of
-        attack, drag build-up for the thrust, BEMT rotor speed for that thrust."""
-        g, cfg = self.group, self.config
-        K = nodes.size
-        h = np.asarray(nodes.altitude_m, float).ravel()
-        V = np.maximum(np.asarray(nodes.speed_mps, float).ravel(), 0.5)
-        gam = np.asarray(nodes.flight_path_angle_rad, float).ravel()
-        acc = np.asarray(nodes.acceleration_mps2, float).ravel()
-        gdot = np.asarray(nodes.flight_path_angle_rate_radps, float).ravel()
-        wma = np.asarray(nodes.parameters.get("wing_mounted_angle_rad", np.zeros(K)), float).ravel() * np.ones(K)
-        pitch = np.asarray(nodes.parameters.get("pitch_command_rad", np.zeros(K)), float).ravel() * np.ones(K)
-        atm = atmosphere(h)
-        rho, mu, a_s = atm["density_kgpm3"], atm["dynamic_viscosity_Pas"], atm["speed_of_sound_mps"]
-        m = self.togw_baseline_kg
-        dn = self._numeric_design()
-        surfaces, _ = self._wing_surfaces(dn, numeric=True)
-        vlm = VLM(surfaces, S_ref=self.S_ref if hasattr(self, "S_ref") else sum(w.area_m2 for w in self.lifting_wings),
-                  mach_ref=0.2)
-        S = float(vlm.geometry["S_ref"]) if not isinstance(vlm.geometry["S_ref"], ca.MX) else self.S_ref
-        r0 = vlm.solve(ca.DM([[0.0, 0.1]]), 1.0)
-        CL0, CL1 = (float(x) for x in np.asarray(r0["CL"]).ravel())
-        CLa = (CL1 - CL0) / 0.1
-        q = 0.5 * rho * V ** 2
-        tilting = cfg.kind == "tilt_wing"
-        # lift needed (thrust's normal share ignored); clip the angle of attack to the linear range
-        CL_req = m * (G0 * np.cos(gam) + V * gdot) / (q * S)
-        alpha = np.clip((CL_req - CL0) / CLa - (wma if tilting else 0.0), np.radians(-8), np.radians(12))
-        theta_in = np.asarray(nodes.body_angle_rad, float).ravel()
-        free = np.isnan(theta_in)
-        theta = np.where(free, alpha + gam, theta_in)
-        DM = lambda x: ca.DM(np.asarray(x, float).reshape(1, -1))  # noqa: E731
-        lo_th, hi_th = np.radians(-55.0), np.radians(80.0)
-        vectored = tilting & (np.abs(wma) > np.radians(5.0))
-
-        def forces(th, sel):
-            """Lift, drag, and the force the thrust must supply (path frame) at attitudes th."""
-            a_ = th - gam[sel]
-            wa = a_ + wma[sel] if tilting else a_
-            r = vlm.solve(DM(wa), DM(V[sel]), rho=DM(rho[sel]), mach=DM(V[sel] / a_s[sel]))
-            pdn = profile_drag(vlm, r, DM(rho[sel]), DM(mu[sel]), DM(V[sel] / a_s[sel]))
-            Ls, Ds = (np.asarray(x, float).ravel() for x in self.stall_correction(
-                vlm, r, pdn, DM(rho[sel]), DM(V[sel]))) if self.wing_stall else (0.0, 0.0)
-            Db = np.asarray(body_drag(self.bodies, DM(V[sel]), DM(rho[sel]), DM(mu[sel]),
-                                      DM(V[sel] / a_s[sel]))[0]).ravel()
-            Dn = np.asarray(r["D_i"]).ravel() + (np.asarray(pdn["D_p"]).ravel() + Ds + Db) * \
-                (1 + self.misc_drag_fraction) * 1.05
-            Ln = np.asarray(r["L"]).ravel() + Ls
-            nt = Dn + m * (G0 * np.sin(gam[sel]) + acc[sel])
-            nn = m * (G0 * np.cos(gam[sel]) + V[sel] * gdot[sel]) - Ln
-            return nt, nn
-
-        allsel = np.ones(K, bool)
-        need_t, need_n = forces(theta, allsel)
-        fv = vectored & free
-        if fv.any():
-            # tilted rotors carry the weight: choose the attitude at which the thrust axis
-            # points along the force the rotors must supply, with the least thrust
-            idx = np.flatnonzero(fv)
-            grid = np.radians(np.arange(-40.0, 81.0, 2.0))
-            G = grid.size
-            sel = np.repeat(idx, G)
-            th_g = np.tile(grid, idx.size)
-            nt, nn = forces(th_g, sel)
-            a_g = th_g - gam[sel] + wma[sel]
-            cross = (-nt * np.sin(a_g) + nn * np.cos(a_g)).reshape(idx.size, G)
-            thrust = (nt * np.cos(a_g) + nn * np.sin(a_g)).reshape(idx.size, G)
-            for j, k in enumerate(idx):
-                c, t = cross[j], thrust[j]
-                roots = [i for i in range(G - 1) if c[i] == 0 or c[i] * c[i + 1] < 0]
-                good = [i for i in roots if t[i] > 0]
-                if good:
-                    i = min(good, key=lambda i: t[i])
-                    f = c[i] / (c[i] - c[i + 1]) if c[i] != c[i + 1] else 0.0
-                    theta[k] = grid[i] + f * (grid[i + 1] - grid[i])
-                else:
-                    theta[k] = grid[np.argmin(np.abs(c) / (np.abs(t) + 1.0))]
-            nt, nn = forces(theta, allsel)
-            need_t, need_n = nt, nn
-        alpha = theta - gam
-        a_rot = alpha + (wma if tilting else 0.0)
-        T_total = np.where(vectored, np.hypot(need_t, need_n),
-                           need_t / np.maximum(np.cos(a_rot), 0.3))
-        T1 = np.maximum(T_total / g.count, 0.03 * m * G0 / g.count)
-        mask = self.transition_nodes(wma)
-        n, m = self.n_stations, self.n_azimuth
-        omega = np.zeros(K)
-        phi = np.zeros((n * m, K))
-        Q1 = np.zeros(K)
-        for sel, mm in ((mask, m), (~mask, 1)):
-            if not sel.any():
-                continue
-            args = (V[sel] * np.cos(a_rot[sel]), V[sel] * np.sin(a_rot[sel]), h[sel], pitch[sel])
-            omega[sel] = self._omega_for_thrust(T1[sel], *args, n_azimuth=mm)
-            res = self._bemt_numeric(omega[sel], *args, n_azimuth=mm)
-            ph = np.asarray(res["phi_rad"], float).reshape(n * mm, int(sel.sum()))
-            phi[:, sel] = ph if mm == m else np.tile(ph, (m, 1))
-            Q1[sel] = np.asarray(res["torque_Nm"], float).ravel()
-        phi = np.clip(phi, PHI_MIN_RAD, PHI_MAX_RAD)
-        soc = np.asarray(nodes.states.get("state_of_charge", np.ones(K)), float).ravel() * np.ones(K)
-        po = self.powertrain.analyze(Q1, omega, np.clip(soc, 0.05, 1.0))
-        return {"body_angle_rad": theta, f"{g.name}.omega": omega, f"{g.name}.phi": phi,
-                "battery_current_A": np.asarray(po["battery_current_A"], float).ravel()}
-
-    def _bemt_numeric(self, omega, v_ax, v_ip, h, pitch, n_azimuth=1):
-        g = self.group
-        blade = self.baseline_blade()
-        atm = atmosphere(h)
-        K = omega.size
-        inputs = {"radius_m": g.radius_m, "hub_fraction": g.hub_fraction, "blades": g.blades,
-                  "chord_m": np.asarray(blade["chord_m"], float).ravel(),
-                  "twist_rad": np.asarray(blade["twist_rad"], float).ravel(),
-                  "pitch_rad": pitch, "omega_radps": omega, "v_axial_mps": v_ax,
-                  "v_inplane_mps": v_ip if n_azimuth > 1 else np.zeros(K),
-                  "rho_kgpm3": atm["density_kgpm3"], "mu_Pas": atm["dynamic_viscosity_Pas"],
-                  "a_mps": atm["speed_of_sound_mps"], "spin": np.ones(K)}
-        return analyze_inputs(self.section, inputs, self.n_stations, n_azimuth)
-
-    def _omega_for_thrust(self, T1, v_ax, v_ip, h, pitch, iterations=22, n_azimuth=1):
-        """Rotor speed giving thrust ``T1`` per rotor at each node: a scan for the
-        lowest speed whose thrust reaches T1 (thrust need not be monotonic in speed
-        for a blade far from its design inflow), then bisection in that interval."""
-        grid = self.omega_design * np.linspace(0.05, 2.5, 25)
-        K = T1.size
-        rep = lambda x: np.tile(np.asarray(x, float) * np.ones(K), grid.size)  # noqa: E731
-        Tg = np.asarray(self._bemt_numeric(np.repeat(grid, K), rep(v_ax), rep(v_ip), rep(h), rep(pitch),
-                                           n_azimuth)["thrust_N"], float).reshape(grid.size, K)
-        reach = Tg >= T1[None, :]
-        j = np.where(reach.any(axis=0), np.argmax(reach, axis=0), grid.size - 1)
-        hi = grid[j]
-        lo = grid[np.maximum(j - 1, 0)]
-        for _ in range(iterations):
-            mid = 0.5 * (lo + hi)
-            T = np.asarray(self._bemt_numeric(mid, v_ax, v_ip, h, pitch, n_azimuth)["thrust_N"], float).ravel()
-            lo = np.where(T < T1, mid, lo)
-            hi = np.where(T < T1, hi, mid)
-        return 0.5 * (lo + hi)
+        """Physics-based guesses at the baseline design (:mod:`mdo.vehicle.guess`)."""
+        from .guess import initial_guess
+        return initial_guess(self, nodes)

@@ -1,0 +1,162 @@
+"""Physics-based initial guesses of the :class:`~mdo.vehicle.aircraft.Aircraft` at its
+baseline design (DESIGN rule 7): the lattice's lift for the angle of attack, the drag
+build-up for the thrust, the BEMT rotor speed for that thrust, the pack current from
+the power balance.  Numbers only; nothing here enters the NLP's graph.
+"""
+from __future__ import annotations
+
+import casadi as ca
+import numpy as np
+
+from ..core.atmosphere import atmosphere
+from ..rotor import PHI_MAX_RAD, PHI_MIN_RAD, analyze_inputs
+from ..wing import VLM, body_drag, profile_drag
+from .base import G0
+
+__all__ = ["initial_guess", "numeric_design", "bemt_numeric", "omega_for_thrust"]
+
+def numeric_design(ac) -> dict:
+    """The baseline design as numbers (what the guesses are computed at)."""
+    g = ac.group
+    d = {"R": g.radius_m, "eta": np.asarray(g.span_eta, float), "wings": {}}
+    for w in ac.lifting_wings:
+        d["wings"][w.name] = {"span": w.span_m, "taper": w.taper,
+                              "twist": np.radians(np.asarray(w.twist_deg, float))}
+    return d
+
+def initial_guess(ac, nodes) -> dict:
+    """Physics-based guesses at the baseline design: lattice lift for the angle of
+    attack, drag build-up for the thrust, BEMT rotor speed for that thrust."""
+    g, cfg = ac.group, ac.config
+    K = nodes.size
+    h = np.asarray(nodes.altitude_m, float).ravel()
+    V = np.maximum(np.asarray(nodes.speed_mps, float).ravel(), 0.5)
+    gam = np.asarray(nodes.flight_path_angle_rad, float).ravel()
+    acc = np.asarray(nodes.acceleration_mps2, float).ravel()
+    gdot = np.asarray(nodes.flight_path_angle_rate_radps, float).ravel()
+    wma = np.asarray(nodes.parameters.get("wing_mounted_angle_rad", np.zeros(K)), float).ravel() * np.ones(K)
+    pitch = np.asarray(nodes.parameters.get("pitch_command_rad", np.zeros(K)), float).ravel() * np.ones(K)
+    atm = atmosphere(h)
+    rho, mu, a_s = atm["density_kgpm3"], atm["dynamic_viscosity_Pas"], atm["speed_of_sound_mps"]
+    m = ac.togw_baseline_kg
+    dn = numeric_design(ac)
+    surfaces, _ = ac._wing_surfaces(dn, numeric=True)
+    vlm = VLM(surfaces, S_ref=ac.S_ref if hasattr(ac, "S_ref") else sum(w.area_m2 for w in ac.lifting_wings),
+              mach_ref=0.2)
+    S = float(vlm.geometry["S_ref"]) if not isinstance(vlm.geometry["S_ref"], ca.MX) else ac.S_ref
+    r0 = vlm.solve(ca.DM([[0.0, 0.1]]), 1.0)
+    CL0, CL1 = (float(x) for x in np.asarray(r0["CL"]).ravel())
+    CLa = (CL1 - CL0) / 0.1
+    q = 0.5 * rho * V ** 2
+    tilting = cfg.kind == "tilt_wing"
+    # lift needed (thrust's normal share ignored); clip the angle of attack to the linear range
+    CL_req = m * (G0 * np.cos(gam) + V * gdot) / (q * S)
+    alpha = np.clip((CL_req - CL0) / CLa - (wma if tilting else 0.0), np.radians(-8), np.radians(12))
+    theta_in = np.asarray(nodes.body_angle_rad, float).ravel()
+    free = np.isnan(theta_in)
+    theta = np.where(free, alpha + gam, theta_in)
+    DM = lambda x: ca.DM(np.asarray(x, float).reshape(1, -1))  # noqa: E731
+    vectored = tilting & (np.abs(wma) > np.radians(5.0))
+
+    def forces(th, sel):
+        """Lift, drag, and the force the thrust must supply (path frame) at attitudes th."""
+        a_ = th - gam[sel]
+        wa = a_ + wma[sel] if tilting else a_
+        r = vlm.solve(DM(wa), DM(V[sel]), rho=DM(rho[sel]), mach=DM(V[sel] / a_s[sel]))
+        pdn = profile_drag(vlm, r, DM(rho[sel]), DM(mu[sel]), DM(V[sel] / a_s[sel]))
+        Ls, Ds = (np.asarray(x, float).ravel() for x in ac.stall_correction(
+            vlm, r, pdn, DM(rho[sel]), DM(V[sel]))) if ac.wing_stall else (0.0, 0.0)
+        Db = np.asarray(body_drag(ac.bodies, DM(V[sel]), DM(rho[sel]), DM(mu[sel]),
+                                  DM(V[sel] / a_s[sel]))[0]).ravel()
+        Dn = np.asarray(r["D_i"]).ravel() + (np.asarray(pdn["D_p"]).ravel() + Ds + Db) * \
+            (1 + ac.misc_drag_fraction) * 1.05
+        Ln = np.asarray(r["L"]).ravel() + Ls
+        nt = Dn + m * (G0 * np.sin(gam[sel]) + acc[sel])
+        nn = m * (G0 * np.cos(gam[sel]) + V[sel] * gdot[sel]) - Ln
+        return nt, nn
+
+    allsel = np.ones(K, bool)
+    need_t, need_n = forces(theta, allsel)
+    fv = vectored & free
+    if fv.any():
+        # tilted rotors carry the weight: choose the attitude at which the thrust axis
+        # points along the force the rotors must supply, with the least thrust
+        idx = np.flatnonzero(fv)
+        grid = np.radians(np.arange(-40.0, 81.0, 2.0))
+        G = grid.size
+        sel = np.repeat(idx, G)
+        th_g = np.tile(grid, idx.size)
+        nt, nn = forces(th_g, sel)
+        a_g = th_g - gam[sel] + wma[sel]
+        cross = (-nt * np.sin(a_g) + nn * np.cos(a_g)).reshape(idx.size, G)
+        thrust = (nt * np.cos(a_g) + nn * np.sin(a_g)).reshape(idx.size, G)
+        for j, k in enumerate(idx):
+            c, t = cross[j], thrust[j]
+            roots = [i for i in range(G - 1) if c[i] == 0 or c[i] * c[i + 1] < 0]
+            good = [i for i in roots if t[i] > 0]
+            if good:
+                i = min(good, key=lambda i: t[i])
+                f = c[i] / (c[i] - c[i + 1]) if c[i] != c[i + 1] else 0.0
+                theta[k] = grid[i] + f * (grid[i + 1] - grid[i])
+            else:
+                theta[k] = grid[np.argmin(np.abs(c) / (np.abs(t) + 1.0))]
+        nt, nn = forces(theta, allsel)
+        need_t, need_n = nt, nn
+    alpha = theta - gam
+    a_rot = alpha + (wma if tilting else 0.0)
+    T_total = np.where(vectored, np.hypot(need_t, need_n),
+                       need_t / np.maximum(np.cos(a_rot), 0.3))
+    T1 = np.maximum(T_total / g.count, 0.03 * m * G0 / g.count)
+    mask = ac.transition_nodes(wma)
+    n, m = ac.n_stations, ac.n_azimuth
+    omega = np.zeros(K)
+    phi = np.zeros((n * m, K))
+    Q1 = np.zeros(K)
+    for sel, mm in ((mask, m), (~mask, 1)):
+        if not sel.any():
+            continue
+        args = (V[sel] * np.cos(a_rot[sel]), V[sel] * np.sin(a_rot[sel]), h[sel], pitch[sel])
+        omega[sel] = omega_for_thrust(ac, T1[sel], *args, n_azimuth=mm)
+        res = bemt_numeric(ac, omega[sel], *args, n_azimuth=mm)
+        ph = np.asarray(res["phi_rad"], float).reshape(n * mm, int(sel.sum()))
+        phi[:, sel] = ph if mm == m else np.tile(ph, (m, 1))
+        Q1[sel] = np.asarray(res["torque_Nm"], float).ravel()
+    phi = np.clip(phi, PHI_MIN_RAD, PHI_MAX_RAD)
+    soc = np.asarray(nodes.states.get("state_of_charge", np.ones(K)), float).ravel() * np.ones(K)
+    po = ac.powertrain.analyze(Q1, omega, np.clip(soc, 0.05, 1.0))
+    return {"body_angle_rad": theta, f"{g.name}.omega": omega, f"{g.name}.phi": phi,
+            "battery_current_A": np.asarray(po["battery_current_A"], float).ravel()}
+
+def bemt_numeric(ac, omega, v_ax, v_ip, h, pitch, n_azimuth=1):
+    g = ac.group
+    blade = ac.baseline_blade()
+    atm = atmosphere(h)
+    K = omega.size
+    inputs = {"radius_m": g.radius_m, "hub_fraction": g.hub_fraction, "blades": g.blades,
+              "chord_m": np.asarray(blade["chord_m"], float).ravel(),
+              "twist_rad": np.asarray(blade["twist_rad"], float).ravel(),
+              "pitch_rad": pitch, "omega_radps": omega, "v_axial_mps": v_ax,
+              "v_inplane_mps": v_ip if n_azimuth > 1 else np.zeros(K),
+              "rho_kgpm3": atm["density_kgpm3"], "mu_Pas": atm["dynamic_viscosity_Pas"],
+              "a_mps": atm["speed_of_sound_mps"], "spin": np.ones(K)}
+    return analyze_inputs(ac.section, inputs, ac.n_stations, n_azimuth)
+
+def omega_for_thrust(ac, T1, v_ax, v_ip, h, pitch, iterations=22, n_azimuth=1):
+    """Rotor speed giving thrust ``T1`` per rotor at each node: a scan for the
+    lowest speed whose thrust reaches T1 (thrust need not be monotonic in speed
+    for a blade far from its design inflow), then bisection in that interval."""
+    grid = ac.omega_design * np.linspace(0.05, 2.5, 25)
+    K = T1.size
+    rep = lambda x: np.tile(np.asarray(x, float) * np.ones(K), grid.size)  # noqa: E731
+    Tg = np.asarray(bemt_numeric(ac, np.repeat(grid, K), rep(v_ax), rep(v_ip), rep(h), rep(pitch),
+                                       n_azimuth)["thrust_N"], float).reshape(grid.size, K)
+    reach = Tg >= T1[None, :]
+    j = np.where(reach.any(axis=0), np.argmax(reach, axis=0), grid.size - 1)
+    hi = grid[j]
+    lo = grid[np.maximum(j - 1, 0)]
+    for _ in range(iterations):
+        mid = 0.5 * (lo + hi)
+        T = np.asarray(bemt_numeric(ac, mid, v_ax, v_ip, h, pitch, n_azimuth)["thrust_N"], float).ravel()
+        lo = np.where(T < T1, mid, lo)
+        hi = np.where(T < T1, hi, mid)
+    return 0.5 * (lo + hi)
