@@ -46,7 +46,7 @@ from ..core.smooth import smooth_max, smooth_min
 from ..powertrain import paper_powertrain
 from ..rotor import (PHI_MAX_RAD, PHI_MIN_RAD, adkins_liebeck, add_adkins_liebeck,
                      bemt_function, section)
-from ..wake import WakeRotor, apply_influences, spin_for, wake_influences
+from ..wake import WakeRotor, influence_sum_parts, spin_for, wake_influences
 from ..wing import VLM, Body, body_drag, constant_area, profile_drag, trapezoid
 from ..wing.drag import form_factor_wing, skin_friction
 from .base import G0, NodeEvaluation, Output, ResidualGroup, State, Unknown
@@ -441,9 +441,10 @@ class Aircraft:
         gam_r = [bm["gamma_m2ps"]] * len(self.rotors)
         om_r = [omega] * len(self.rotors)
         vw_r = [v_w] * len(self.rotors)
-        v_cp = apply_influences(self.influences, gam_r, om_r, vw_r)
-        v_b = apply_influences(self.influences, gam_r, om_r, vw_r, axial_factor=0.0) \
-            if self.coupling == "swirl" else None
+        # the whole wake in the flow tangency; without its axial part in the forces ("swirl")
+        v_axial, v_rest = influence_sum_parts(self.influences, gam_r, om_r, vw_r)
+        v_cp = tuple(a + r for a, r in zip(v_axial, v_rest))
+        v_b = v_rest if self.coupling == "swirl" else None
         mach = V / a_s
         wing_alpha = alpha + wma if self.config.kind == "tilt_wing" else alpha
         r = self.vlm.solve(wing_alpha, V, rho=rho, mach=mach, v_ext=v_cp, v_ext_bound=v_b)

@@ -23,8 +23,8 @@ __all__ = [
     "full_wake_function", "full_wake_velocity", "wake_segments_function",
     "apply_influence", "influence", "influence_function", "jump_matrix", "mean_wake_velocity", "unit_cylinder",
 ]
-from .coupling import (COUPLINGS, apply_influences, external_velocity, vlm_wake_inputs,
+from .coupling import (COUPLINGS, apply_influences, external_velocity, influence_sum_parts, vlm_wake_inputs,
                        wake_convection_speed, wake_influences)
 
-__all__ += ["COUPLINGS", "apply_influences", "external_velocity", "vlm_wake_inputs",
+__all__ += ["COUPLINGS", "apply_influences", "external_velocity", "influence_sum_parts", "vlm_wake_inputs",
             "wake_convection_speed", "wake_influences"]

@@ -32,9 +32,10 @@ import numpy as np
 from ..core.errors import InputError
 from .helical import DEFAULT_ROTATIONS, DEFAULT_STEPS_PER_ROTATION, full_wake_velocity
 from .frames import rotor_frame
-from .mean import apply_influence, influence, strip_averaged_influence
+from .mean import influence, influence_parts, strip_averaged_influence
 
-__all__ = ["wake_influences", "external_velocity", "apply_influences", "wake_convection_speed"]
+__all__ = ["wake_influences", "external_velocity", "apply_influences", "influence_sum_parts",
+           "wake_convection_speed"]
 
 
 def wake_convection_speed(v_axial_mps, va_mean_mps):
@@ -89,15 +90,23 @@ def apply_influences(influences, gamma, omega_radps, v_wake_mps, axial_factor=1.
     """Σ over rotors of the averaged-wake velocity: (vx, vy, vz), each M×K, from the
     per-rotor factored influences and per-rotor Γ (N×K), Ω and V_w (K values);
     ``axial_factor`` scales each rotor's velocity component along its own axis."""
-    total = None
+    axial, rest = influence_sum_parts(influences, gamma, omega_radps, v_wake_mps)
+    return tuple(axial_factor * a + r for a, r in zip(axial, rest))
+
+
+def influence_sum_parts(influences, gamma, omega_radps, v_wake_mps):
+    """As :func:`apply_influences`, in two parts summed over the rotors: the velocity
+    along each rotor's axis and the rest (radial, swirl), each (vx, vy, vz) M×K."""
+    axial = rest = None
     for infl, g, om, vw in zip(influences, gamma, omega_radps, v_wake_mps):
         n = (infl["Bx"] if isinstance(infl, dict) else infl[0]).shape[1]
         g = _as_nk(g, n, "gamma")
         k = g.shape[1]
         ratio = _as_row(om, k, "omega_radps") / _as_row(vw, k, "v_wake_mps")
-        v = apply_influence(infl, g * ca.repmat(ratio, n, 1), g, axial_factor)
-        total = v if total is None else tuple(a + b for a, b in zip(total, v))
-    return total
+        a, r = influence_parts(infl, g * ca.repmat(ratio, n, 1), g)
+        axial = a if axial is None else tuple(x + y for x, y in zip(axial, a))
+        rest = r if rest is None else tuple(x + y for x, y in zip(rest, r))
+    return axial, rest
 
 
 def external_velocity(points, rotors, gamma, omega_radps, v_wake_mps, *, model: str = "mean",

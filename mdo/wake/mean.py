@@ -61,7 +61,7 @@ import numpy as np
 from ..core.errors import InputError
 from .frames import rotor_frame
 
-__all__ = ["unit_cylinder", "influence_function", "influence", "strip_averaged_influence", "apply_influence",
+__all__ = ["unit_cylinder", "influence_function", "influence", "strip_averaged_influence", "apply_influence", "influence_parts",
            "mean_wake_velocity", "jump_matrix", "TABLE_CORE_REL"]
 
 _DATA = Path(__file__).with_name("data")
@@ -165,24 +165,32 @@ def influence_function(n_points: int, n_stations: int, blades: int, core_rel: fl
                        ["Ax", "Ar", "At", "e_a", "rvec", "tdir"])
 
 
+def influence_parts(infl, gamma_over_p, gamma):
+    """The velocity of :func:`apply_influence` in two parts, each (vx, vy, vz) M×K: the
+    component along the rotor axis, and the rest (radial and swirl) — so that callers
+    needing both the whole wake and the wake without its axial part share the products."""
+    if isinstance(infl, dict):   # strip-averaged: the directions are folded into the matrices
+        ua = ca.mtimes(infl["Bx"], gamma_over_p)
+        axial = tuple(infl["e_a"][c] * ua for c in range(3))
+        rest = tuple(ca.mtimes(infl["Br"][c], gamma_over_p) + ca.mtimes(infl["Bt"][c], gamma) for c in range(3))
+        return axial, rest
+    ax, ar, at, e_a, rvec, tdir = infl
+    ua = ca.mtimes(ax, gamma_over_p)                           # M×K
+    ur = ca.mtimes(ar, gamma_over_p)
+    ut = ca.mtimes(at, gamma)
+    k = ua.shape[1]
+    axial = tuple(e_a[c] * ua for c in range(3))
+    rest = tuple(ca.repmat(rvec[c, :].T, 1, k) * ur + ca.repmat(tdir[c, :].T, 1, k) * ut for c in range(3))
+    return axial, rest
+
+
 def apply_influence(infl, gamma_over_p, gamma, axial_factor=1.0):
     """Velocity components (vx, vy, vz), each M×K, from the factored influence ``infl``
     (the 6 outputs of :func:`influence_function`, or a :func:`strip_averaged_influence`)
     and per-node Γ/p and Γ (N×K).
     ``axial_factor`` scales the component along the rotor axis (1: the wake as is)."""
-    if isinstance(infl, dict):   # strip-averaged: the directions are folded into the matrices
-        ua = ca.mtimes(infl["Bx"], gamma_over_p)
-        return tuple(axial_factor * infl["e_a"][c] * ua + ca.mtimes(infl["Br"][c], gamma_over_p)
-                     + ca.mtimes(infl["Bt"][c], gamma) for c in range(3))
-    ax, ar, at, e_a, rvec, tdir = infl
-    ua = axial_factor * ca.mtimes(ax, gamma_over_p)            # M×K
-    ur = ca.mtimes(ar, gamma_over_p)
-    ut = ca.mtimes(at, gamma)
-    k = ua.shape[1]
-    out = []
-    for c in range(3):
-        out.append(e_a[c] * ua + ca.repmat(rvec[c, :].T, 1, k) * ur + ca.repmat(tdir[c, :].T, 1, k) * ut)
-    return tuple(out)
+    axial, rest = influence_parts(infl, gamma_over_p, gamma)
+    return tuple(axial_factor * a + r for a, r in zip(axial, rest))
 
 
 def _col(x):

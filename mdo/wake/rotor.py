@@ -1,7 +1,7 @@
 """What the wake needs to know about a rotor: placement, size, blade elements, sense."""
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 
