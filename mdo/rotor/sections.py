@@ -195,7 +195,7 @@ class RotationalAugmentation:
       ``f = 1/(2 pi) [1.6 (c/r)/0.1267 (1 - (c/r)^(R/(Lambda r))) / (1 + (c/r)^(R/(Lambda r))) - 1]``.
 
     ``f`` is limited smoothly to [0, 1] (``f - sp(f - 1)``, softplus width 0.05,
-    and ``sp(f)`` below: inboard of props c/r exceeds 0.5 where Snel's fit was never
+    and ``sp(f)`` of width 0.01 below, a floor of 0.007: inboard of props c/r exceeds 0.5 where Snel's fit was never
     meant to go).  ``g = sigmoid((alpha_end - (alpha - alpha0))/2 deg)`` with
     alpha_end = 30 deg fades the correction back to the 2-D (plate) values in deep
     stall, where the rotational boundary layer no longer adds lift; below alpha_r
@@ -221,7 +221,7 @@ class RotationalAugmentation:
         else:
             e = c_over_r ** (1.0 / (tip_speed_ratio * x))
             f = (1.6 * c_over_r / 0.1267 * (1.0 - e) / (1.0 + e) - 1.0) / (2.0 * math.pi)
-        f = softplus(f, 0.05)
+        f = softplus(f, 0.01)
         return f - softplus(f - 1.0, 0.05)
 
     def coefficients(self, alpha, reynolds, mach=0.0, x=0.5, c_over_r=0.0, tip_speed_ratio=1.0):
