@@ -70,3 +70,12 @@ def test_stall_delay_in_the_bemt_is_smooth_and_raises_static_thrust():
     res = f(**args)["residual"]
     h = ca.Function("h", [x], [ca.hessian(ca.sumsqr(res), x)[0]])
     assert np.all(np.isfinite(np.array(h(np.full(8, 0.2)))))
+
+
+def test_adkins_liebeck_with_a_stall_delay_section():
+    """The design point is attached: a stall-delay section designs like its 2-D base."""
+    from mdo.rotor import adkins_liebeck
+    kw = dict(blades=2, radius_m=0.5, speed_mps=20.0, thrust_N=50.0, rpm=3000, cl_design=0.6, n_stations=10)
+    a = adkins_liebeck(airfoil="naca4412", **kw)
+    b = adkins_liebeck(airfoil="naca4412+du_selig", **kw)
+    np.testing.assert_allclose(b["chord_m"], a["chord_m"], rtol=1e-9)

@@ -226,12 +226,10 @@ class RotationalAugmentation:
 
     def coefficients(self, alpha, reynolds, mach=0.0, x=0.5, c_over_r=0.0, tip_speed_ratio=1.0):
         cl, cd = section_coefficients(self.sec, alpha, reynolds, mach, x)
-        a0, slope = _linear_lift(self.sec, x)
         # the linear lift is anchored to the 2-D section itself at alpha0 + 5 deg (attached at
-        # every Re), so that the low-Re zero-lift shift of the polar is not "augmented"
-        a_ref = a0 + self.anchor_rad
-        cl_ref = section_coefficients(self.sec, a_ref + 0.0 * alpha, reynolds, mach, x)[0]
-        cl_lin = cl_ref + slope * (alpha - a_ref)
+        # every Re), so that the low-Re zero-lift shift of the polar is not "augmented"; the
+        # anchor cl(alpha_r, Re) is a 1-D spline in ln Re per section (cheap, see _Anchor)
+        a0, cl_lin = _linear_lift_anchored(self.sec, alpha, reynolds, mach, x, self.anchor_rad)
         d = alpha - a0
         g = sigmoid(self.alpha_end_rad - d, math.radians(2.0)) * sigmoid(d - self.anchor_rad, math.radians(1.0))
         f = self.factor(c_over_r, x, tip_speed_ratio)
@@ -245,6 +243,67 @@ class RotationalAugmentation:
 
     def __repr__(self):
         return f"RotationalAugmentation({self.sec!r}, {self.model})"
+
+
+class _Anchor:
+    """``cl(alpha0 + anchor, Re, M = 0)`` of one (non-blended) section as a cubic
+    B-spline in ln Re on 41 points over Re 1e3..1e8 (one call node in SX graphs, as
+    the airfoil surrogate's), times the Prandtl-Glauert factor of ``mdo.airfoil``
+    (M capped smoothly at 0.7).  ln Re is limited smoothly to the spline's range."""
+
+    LO, HI = math.log(1e3), math.log(1e8)
+
+    def __init__(self, sec, anchor_rad):
+        import casadi as ca
+        from scipy.interpolate import make_interp_spline
+
+        self.a0, self.slope = _linear_lift(sec)
+        self.a_ref = self.a0 + anchor_rad
+        grid = np.linspace(self.LO, self.HI, 41)
+        vals = np.array([float(np.asarray(_coefficients(sec, self.a_ref, float(np.exp(r)), 0.0)[0])) for r in grid])
+        spl = make_interp_spline(grid, vals, k=3)
+        self._np = spl
+        b = ca.Function.bspline(f"anchor_{id(self)}_bspline", [spl.t.tolist()], spl.c.tolist(), [3], 1)
+        xs = ca.MX.sym("lnre")
+        self._ca = ca.Function(f"anchor_{id(self)}", [xs], [b(xs)], {"never_inline": True})
+
+    def cl_ref(self, reynolds, mach):
+        import casadi as ca
+        lib = xp(reynolds, mach)
+        r = 0.5 * lib.log(reynolds * reynolds + 1.0)
+        r = r - softplus(r - (self.HI - 0.3), 0.05) + softplus((self.LO + 0.3) - r, 0.05)
+        if lib is ca:
+            val = self._ca(r)
+        else:
+            val = self._np(r)
+        m_e = mach - softplus(mach - 0.7, 0.03)
+        return val / lib.sqrt(1.0 - m_e * m_e)
+
+
+_ANCHORS: dict = {}
+
+
+def _leaves(sec, x):
+    """[(weight, leaf section)] of a (possibly blended) section at r/R = x."""
+    if isinstance(sec, SpanwiseBlend):
+        w = sec.weight(x)
+        return [(1.0 - w, sec.inner), (w, sec.outer)]
+    if isinstance(sec, SpanwiseSections):
+        return list(zip(sec.weights(x), sec.sections))
+    return [(1.0, sec)]
+
+
+def _linear_lift_anchored(sec, alpha, reynolds, mach, x, anchor_rad):
+    """Blended (alpha0, cl_lin(alpha)) with cl_lin = sum_k w_k [cl_k(a_ref,k, Re) + a_k (alpha - a_ref,k)]."""
+    a0 = cl_lin = 0.0
+    for w, leaf in _leaves(sec, x):
+        key = (id(leaf), anchor_rad)
+        if key not in _ANCHORS:
+            _ANCHORS[key] = _Anchor(leaf, anchor_rad)
+        an = _ANCHORS[key]
+        a0 = a0 + w * an.a0
+        cl_lin = cl_lin + w * (an.cl_ref(reynolds, mach) + an.slope * (alpha - an.a_ref))
+    return a0, cl_lin
 
 
 def _linear_lift(sec, x=0.5):
@@ -270,6 +329,8 @@ def section_coefficients(sec, alpha, reynolds, mach, x=None, c_over_r=None, tip_
     """``(cl, cd)`` of any section object; ``x = r/R`` for spanwise blends, ``c/r`` and
     ``Omega R/sqrt(V^2 + (Omega R)^2)`` for rotational augmentation."""
     if getattr(sec, "rotational", False):
+        if c_over_r is None:   # no blade context (e.g. the Adkins-Liebeck design point): 2-D
+            return section_coefficients(sec.sec, alpha, reynolds, mach, x)
         return sec.coefficients(alpha, reynolds, mach, x, c_over_r, tip_speed_ratio)[:2]
     if getattr(sec, "spanwise", False):
         return sec.coefficients(alpha, reynolds, mach, x)[:2]
