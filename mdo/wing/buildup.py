@@ -75,7 +75,8 @@ r, P_loss), any of which may be CasADi SX/MX rows (one column per node) or NumPy
 
 API::
 
-    bu = DragBuildup(s_ref_m2, components=(SurfaceComponent(...), BodyComponent(...), ...),
+    wing = SurfaceComponent.from_trapezoid("main_wing", 11.4, 14.76, 0.7, 0.12, body_width_m=1.07)
+    bu = DragBuildup(s_ref_m2, components=(wing, BodyComponent(...), ...),
                      excrescence_fraction=0.10, cooling=CoolingDrag())
     out = bu.evaluate(V_mps, rho, mu, mach, slipstream={"main_wing": (f_s, r)},
                       heat_loss_W=P_loss)
@@ -214,6 +215,21 @@ class SurfaceComponent:
     @property
     def length_m(self):
         return self.mac_m
+
+    @classmethod
+    def from_trapezoid(cls, name, span_m, area_m2, taper, thickness_to_chord=0.12,
+                       sweep_quarter_chord_rad=0.0, x_max_thickness=0.3, body_width_m=0.0,
+                       vertical=False, **kw):
+        """A trapezoidal surface: span (full span; a fin's height), area (a fin: one side),
+        taper; exposed area = area - root chord x ``body_width_m`` (the body-covered strip);
+        MAC and the sweep of the max-thickness line from the planform."""
+        c_root = 2 * area_m2 / (span_m * (1 + taper))
+        mac = 2 / 3 * c_root * (1 + taper + taper * taper) / (1 + taper)
+        ar = 2 * span_m ** 2 / area_m2 if vertical else span_m ** 2 / area_m2   # a fin is half a wing
+        tan_m = math.tan(sweep_quarter_chord_rad) - 4 / ar * (x_max_thickness - 0.25) * (1 - taper) / (1 + taper)
+        return cls(name, area_m2 - c_root * body_width_m, mac, thickness_to_chord, x_max_thickness,
+                   math.atan(tan_m), **kw)
+
 
     def s_wet(self):
         return self.wetted_area_m2 if self.wetted_area_m2 is not None else \

@@ -45,7 +45,6 @@ import math
 import pathlib
 import sys
 
-import numpy as np
 from scipy.optimize import brentq, minimize_scalar
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
@@ -54,8 +53,7 @@ sys.path.insert(0, str(ROOT))
 from mdo.core.atmosphere import density, dynamic_viscosity, speed_of_sound  # noqa: E402
 from mdo.core import units as u                   # noqa: E402
 from mdo.vehicle.catalog import _ga_airframe      # noqa: E402
-from mdo.wing.buildup import (INTERFERENCE, BodyComponent, DragBuildup, SurfaceComponent,  # noqa: E402
-                              surface_wetted_area)
+from mdo.wing.buildup import INTERFERENCE, BodyComponent, DragBuildup, SurfaceComponent  # noqa: E402
 
 G = u.G0
 PROP_DIAMETER_M = 1.78           # MT MTV-21-A-C-F/CF178-05 (POH)
@@ -68,31 +66,17 @@ HEAT_TO_AIR_PER_SHAFT_W = 1.0
 RAYMER_CFE_LIGHT_TWIN = 0.0045   # Raymer Table 12.3
 
 
-def _mac_and_root(w):
-    cr = 2 * w.area_m2 / (w.span_m * (1 + w.taper))
-    lam = w.taper
-    return 2 / 3 * cr * (1 + lam + lam * lam) / (1 + lam), cr
-
-
-def _sweep_at(w, x_over_c):
-    """Sweep of the x/c line from the quarter-chord sweep (linear taper)."""
-    span = w.span_m if w.vertical else w.span_m / 2
-    ar = (2 * span) ** 2 / (2 * w.area_m2) if w.vertical else w.span_m ** 2 / w.area_m2
-    t = math.tan(math.radians(w.sweep_quarter_chord_deg)) - 4 / ar * (x_over_c - 0.25) * (1 - w.taper) / (1 + w.taper)
-    return math.atan(t)
-
-
 def build_p2006t() -> DragBuildup:
     main, htail, vtail, fus = _ga_airframe()
     comps = []
     for w in (main, htail, vtail):
-        mac, cr = _mac_and_root(w)
         # exposed: the wing minus the fuselage-width strip of root chord; tails taken whole
         # (the stabilator sits on a thin tail cone, the fin area is given above the fuselage)
-        s_exp = w.area_m2 - (cr * fus.width_m if w.name == "main_wing" else 0.0)
-        xm = X_MAX_THICKNESS[w.name]
         q_i = INTERFERENCE["high_wing"] if w.name == "main_wing" else INTERFERENCE["conventional_tail"]
-        comps.append(SurfaceComponent(w.name, s_exp, mac, w.thickness_to_chord, xm, _sweep_at(w, xm), q_i))
+        comps.append(SurfaceComponent.from_trapezoid(
+            w.name, w.span_m, w.area_m2, w.taper, w.thickness_to_chord,
+            math.radians(w.sweep_quarter_chord_deg), X_MAX_THICKNESS[w.name],
+            fus.width_m if w.name == "main_wing" else 0.0, w.vertical, interference=q_i))
     d_eq = math.sqrt(fus.width_m * fus.height_m)
     comps.append(BodyComponent("fuselage", fus.length_m, d_eq, "fuselage", INTERFERENCE["fuselage"],
                                wetted_area_m2=fus.wetted_area_m2))
