@@ -317,8 +317,11 @@ class DragBuildup:
         f_s = comp.slipstream_fraction if f_s is None else f_s
         re = rho * V_mps * comp.length_m / mu
         cf0 = composite_skin_friction(re, mach, comp.transition, comp.length_m, self.roughness_m)
-        cf_s = composite_skin_friction(r * re, r * mach, comp.transition, comp.length_m, self.roughness_m)
-        scrub = (1 - f_s) * cf0 + f_s * r * r * cf_s
+        if isinstance(f_s, (int, float)) and f_s == 0:
+            scrub = cf0                      # nothing immersed: keep the expression graph small
+        else:
+            cf_s = composite_skin_friction(r * re, r * mach, comp.transition, comp.length_m, self.roughness_m)
+            scrub = (1 - f_s) * cf0 + f_s * r * r * cf_s
         return comp.count * (comp.form_factor(mach) * comp.interference * comp.s_wet() * scrub
                              + comp.fixed_drag_area_m2())
 
