@@ -112,8 +112,9 @@ def _print_rows(folder: Path, data: dict, rows: list, tol: float, out):
         print(f"  note: the solve did not converge ({status})", file=out)
 
 
-def check_run(run_dir, tol: float | None = None, out=sys.stdout) -> int:
+def check_run(run_dir, tol: float | None = None, out=None) -> int:
     """Check a run folder (and its ``analysis/`` stage); returns the exit code."""
+    out = sys.stdout if out is None else out
     tol = DEFAULT_TOL if tol is None else float(tol)
     if not (np.isfinite(tol) and tol >= 0):
         print(f"mdo: error: --tol: must be finite and >= 0, got {tol}", file=sys.stderr)
