@@ -39,6 +39,11 @@ __all__ = ["Problem", "Variable", "ConstraintGroup", "Solution", "SolveError", "
 # status of a solve stopped by a signal -> (signal name, conventional exit code 128 + signum)
 INTERRUPT_STATUS = {"Interrupted_By_User": ("SIGINT", 130), "Terminated_By_Signal": ("SIGTERM", 143)}
 
+# IPOPT statuses after which CasADi 3.6-3.8 crashes (SIGSEGV) when the solver is destroyed
+# at interpreter exit; the CLI then leaves with os._exit once its files are flushed
+CRASH_ON_EXIT_STATUS = {"Invalid_Option"}
+FRAGILE = []   # Opti objects whose solve ended so: kept alive until os._exit
+
 # an inequality element whose scaled slack is at most this is "active" (IPOPT ends with
 # slacks of order mu ~ tol = 1e-6 on the scaled problem, so 1e-5 separates at-the-limit
 # from clear of it)
@@ -79,15 +84,6 @@ class Variable:
     @property
     def size(self) -> int:
         return int(np.prod(self.shape))
-
-    def label(self, i: int) -> str:
-        """Name of element ``i`` (column-major, CasADi's order) for reports."""
-        if self.labels and len(self.labels) == self.size:
-            return self.labels[i]
-        if self.size == 1:
-            return ""
-        r, c = i % self.shape[0], i // self.shape[0]
-        return f"element {i}" if self.shape[1] == 1 else f"element [{r}, {c}]"
 
 
 @dataclass
@@ -579,6 +575,8 @@ class Problem:
         else:
             status = "Terminated_By_Signal" if signum == signal.SIGTERM else "Interrupted_By_User"
         success = bool(stats.get("success", False)) and signum is None
+        if status in CRASH_ON_EXIT_STATUS:
+            FRAGILE.append(self.opti)   # kept alive: destroying it crashes
         n_iter = int(stats.get("iter_count", 0))
         if not (0 <= n_iter <= int(ipopt["max_iter"])):
             # IPOPT aborted (interrupt, exception): its counter is not set; use what was logged
@@ -893,6 +891,8 @@ def element_label(var: dict, i: int) -> str:
     labels = var.get("labels")
     if labels and len(labels) == n:
         return labels[i]
+    if labels and len(shape) == 2 and len(labels) == shape[1]:   # one label per column (node)
+        return labels[i // shape[0]] + (f" row {i % shape[0]}" if shape[0] > 1 else "")
     if n == 1:
         return ""
     if len(shape) == 1 or shape[1] == 1:
