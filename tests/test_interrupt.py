@@ -67,3 +67,21 @@ def test_interrupt_in_the_baseline_stage_says_so(tmp_path):
     assert "did not converge" not in err and "fix the baseline" not in err
     assert json.loads((out / "analysis" / "summary.json").read_text())["status"] == "Interrupted_By_User"
     assert not (out / "summary.json").exists()   # the optimization never started
+
+
+@pytest.mark.parametrize("sig,code", [(signal.SIGINT, 130), (signal.SIGTERM, 143)])
+def test_signal_while_building_leaves_nothing(tmp_path, sig, code):
+    f = tmp_path / "slow_build.py"
+    f.write_text("import time\n\ndef build():\n    time.sleep(60)\n")
+    out = tmp_path / "new" / "run"
+    proc = subprocess.Popen([sys.executable, "-m", "mdo.cli", "run", str(f), "--out", str(out)],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    t0 = time.time()
+    while not list(tmp_path.glob("new/run.incomplete-*")) and time.time() - t0 < 60:
+        time.sleep(0.1)
+    time.sleep(0.5)
+    proc.send_signal(sig)
+    _, err = proc.communicate(timeout=60)
+    assert proc.returncode == code, err
+    assert f"interrupted by {signal.Signals(sig).name}" in err and "no solve was running" in err
+    assert "Traceback" not in err and not (tmp_path / "new").exists()
