@@ -140,6 +140,27 @@ WARM_START_OPTIONS = {
 }
 
 
+def _outcome(stats: dict, max_iter: int, signum):
+    """(history, status, success, iterations) from IPOPT's stats and the signal caught."""
+    history = {"iter": [], "objective": [], "inf_pr": [], "inf_du": []}
+    it = stats.get("iterations", {})
+    if it:
+        history["objective"] = [float(v) for v in it.get("obj", [])]
+        history["inf_pr"] = [float(v) for v in it.get("inf_pr", [])]
+        history["inf_du"] = [float(v) for v in it.get("inf_du", [])]
+        history["iter"] = list(range(len(history["objective"])))
+    if signum is None:
+        status = stats.get("return_status", "unknown")
+    else:
+        status = "Terminated_By_Signal" if signum == signal.SIGTERM else "Interrupted_By_User"
+    success = bool(stats.get("success", False)) and signum is None
+    n_iter = int(stats.get("iter_count", 0))
+    if not (0 <= n_iter <= max_iter):
+        # IPOPT aborted (interrupt, exception): its counter is not set; use what was logged
+        n_iter = max(len(history["objective"]) - 1, 0)
+    return history, status, success, n_iter
+
+
 @contextlib.contextmanager
 def _signals_as_interrupts():
     """SIGINT and SIGTERM raise KeyboardInterrupt while IPOPT runs (CasADi checks for a
@@ -546,9 +567,8 @@ class Problem:
                   "error_on_fail": False, "expand": False}
         self.opti.solver("ipopt", plugin, ipopt)
         if progress is not None:
-            progress(f"building derivative functions (Jacobian, Hessian) and starting IPOPT")
+            progress("building derivative functions (Jacobian, Hessian) and starting IPOPT")
 
-        history = {"iter": [], "objective": [], "inf_pr": [], "inf_du": []}
         t0 = time.perf_counter()
         with _signals_as_interrupts() as caught:
             try:
@@ -563,24 +583,9 @@ class Problem:
         stats = {}
         with contextlib.suppress(Exception):
             stats = dict(self.opti.stats())
-        it = stats.get("iterations", {})
-        if it:
-            history["objective"] = [float(v) for v in it.get("obj", [])]
-            history["inf_pr"] = [float(v) for v in it.get("inf_pr", [])]
-            history["inf_du"] = [float(v) for v in it.get("inf_du", [])]
-            history["iter"] = list(range(len(history["objective"])))
-        signum = caught.get("signal")
-        if signum is None:
-            status = stats.get("return_status", "unknown")
-        else:
-            status = "Terminated_By_Signal" if signum == signal.SIGTERM else "Interrupted_By_User"
-        success = bool(stats.get("success", False)) and signum is None
+        history, status, success, n_iter = _outcome(stats, int(ipopt["max_iter"]), caught.get("signal"))
         if status in CRASH_ON_EXIT_STATUS:
             FRAGILE.append(self.opti)   # kept alive: destroying it crashes
-        n_iter = int(stats.get("iter_count", 0))
-        if not (0 <= n_iter <= int(ipopt["max_iter"])):
-            # IPOPT aborted (interrupt, exception): its counter is not set; use what was logged
-            n_iter = max(len(history["objective"]) - 1, 0)
         solution = Solution._from_debug(self, debug, status=status, success=success,
                                         iterations=n_iter, wall_time_s=wall,
                                         stats=stats, history=history)
