@@ -79,7 +79,10 @@ def check_solution(data: dict, tol: float = DEFAULT_TOL) -> list:
         m = np.where(fixed, -np.abs(x - lo), np.minimum(x - lo, up - x))
         m = np.where(np.isfinite(x), m, -np.inf)
         s = m / sc
-        i = int(np.argmin(s))
+        # a fixed element (an initial condition) has margin 0 by construction: it is the
+        # worst only when it is off its value beyond tolerance or all elements are fixed
+        rank = np.where(fixed & (s >= -tol) & ~fixed.all(), np.inf, s)
+        i = int(np.argmin(rank))
         lab = element_label(v, i)
         side = "fixed" if fixed[i] else ("lower" if x[i] - lo[i] <= up[i] - x[i] else "upper")
         rows.append({"name": v["name"], "kind": "bound", "where": (f"{lab}, " if lab else "") + f"{side} bound",

@@ -832,7 +832,7 @@ def _active_markdown(active: list, top: int = 30) -> list:
 
 def _readable(v, unit: str):
     """A value as people read it: angles in degrees, 4 significant digits."""
-    a = np.asarray(np.nan if v is None else v, dtype=float)
+    a = np.asarray(np.nan if v is None else v, dtype=float) + 0.0   # + 0.0: no "-0"
     if unit == "rad":
         a, unit = np.degrees(a), "deg"
     if a.size == 1:
