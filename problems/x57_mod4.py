@@ -15,6 +15,11 @@ propellers D = 1.523 m, 3 blades, designed at 174 mph and 8000 ft, 2250 rpm, des
 0.75, 60 kW cruise motors; high-lift propellers D = 0.58 m, 5 blades, 4000 rpm, designed
 at 64 mph, spaced 0.6 m from y = 1.05 m, 10.5 kW motors; battery 128s x 40p 18650 cells
 (460 V; 5120 cells in 16 modules), about 3000 lb gross; cruise 172 mph at 8000 ft.
+The X-57's cells (Samsung 18650-30Q, Chin et al., "Battery Performance Modeling on
+Maxwell X-57", AIAA SciTech 2019) are rated 15 A continuous: that is the cell-current
+limit here, beyond the 8 A of the measured curves the cell model is fitted to (an
+extrapolation of the cell model, stated).  The mass build-up (Raymer GA regressions, no
+calibration) gives 1348 kg = 2972 lb against NASA's "approximately 3000 lb".
 The P2006T fuselage and tails are kept (the X-57 is a modified P2006T).  The wing's
 section is not published in those sources: NACA 63-412 stands in.  The high-lift
 propellers' blown lift is captured with the "local" coupling (slipstream dynamic
@@ -62,9 +67,9 @@ def x57_mod4(cells_parallel: int = 40, cruise_speed_mps: float = 172 * MPH,
                               wetted_area_m2=30000 * INCH ** 2, tail_arm_m=4.66)
     return VehicleConfig(
         "X-57 Mod IV", "airplane", wings=(wing, htail, fin), rotor_groups=(cruise, highlift), fuselage=fuselage,
-        battery=BatteryConfig(128, cells_parallel), cruise_speed_mps=cruise_speed_mps,
+        battery=BatteryConfig(128, cells_parallel, max_cell_current_A=15.0), cruise_speed_mps=cruise_speed_mps,
         cruise_altitude_m=cruise_altitude_m, togw_reference_kg=3000 * 0.45359237,
-        mass_inputs={"airframe_calibration": 1.16, "main_gear_length_in": 24.0, "nose_gear_length_in": 20.0,
+        mass_inputs={"airframe_calibration": 1.0, "main_gear_length_in": 24.0, "nose_gear_length_in": 20.0,
                      "uninstalled_avionics_lb": 40.0})
 
 
