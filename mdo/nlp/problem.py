@@ -510,7 +510,11 @@ class Solution:
         with open(out / "summary.json", "w") as f:
             json.dump(self.summary(), f, indent=1, default=_json_default)
         (out / "summary.md").write_text(self.summary_markdown())
-        with open(out / "convergence.csv", "w") as f:
+        if (out / "ipopt.log").exists():   # one source: the iteration lines the log shows
+            from ..plots.convergence import write_convergence_csv
+            write_convergence_csv(out / "ipopt.log", out / "convergence.csv")
+            return out
+        with open(out / "convergence.csv", "w") as f:   # no log: the intermediate callback's history
             f.write("iter,objective,inf_pr,inf_du\n")
             h = self.history
             for i in range(len(h.get("objective", []))):

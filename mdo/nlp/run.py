@@ -10,7 +10,8 @@ the run folder (``results/<problem-file-stem>/`` by default, ``.../analysis/`` f
 ``summary.json``     status, objective with unit, iterations, wall time, NLP size,
                      the problem's summary outputs (e.g. battery_energy_kWh)
 ``summary.md``       the same for people, with the worst constraint violations
-``convergence.csv``  objective, primal and dual infeasibility per iteration
+``convergence.csv``  the iteration lines of ipopt.log (objective, inf_pr, inf_du, lg_mu ...)
+``report.html``      one self-contained page: status, objective, constraints, design, figures
 plus whatever the problem's reports write (figures, mission.csv, ...).
 
 An existing run folder is never overwritten unless ``force=True``.
@@ -126,4 +127,9 @@ def run_problem(problem: Problem, out_dir, *, force: bool = False, max_iter: int
                   f"{type(exc).__name__}: {exc}", file=sys.stderr)
             if verbose:
                 traceback.print_exc()
+    try:   # the page a designer opens, from the files just written (as ``mdo plot`` makes it)
+        from ..plots.report_html import write_report_html
+        write_report_html(out)
+    except Exception as exc:
+        print(f"warning: report.html failed: {type(exc).__name__}: {exc}", file=sys.stderr)
     return solution
