@@ -107,6 +107,8 @@ def write_design_checks(run_dir) -> list[dict]:
     twice changes nothing) and ``summary.json`` (``design_checks``, ``design_warnings``)."""
     run = Path(run_dir)
     checks = design_checks(run)
+    if not checks:   # nothing to check (a fixed-polar vehicle has no blade, rotor or geometry files)
+        return checks
     md = run / "summary.md"
     if md.exists():
         text = md.read_text()

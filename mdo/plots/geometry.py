@@ -104,6 +104,18 @@ def plot_geometry(geometry_json, out_png, title=None, units="si", turns: float =
     k = 1.0 / us.length
     fig = plt.figure(figsize=(10, 7))
     ax = fig.add_subplot(111, projection="3d")
+    pts = np.hstack([s["le"] for s in g["surfaces"]] + [s["te"] for s in g["surfaces"]]
+                    + [_disk(r) for r in g.get("rotors", [])]) * k
+    lo, hi = pts.min(axis=1), pts.max(axis=1)
+    if "fuselage" in g:
+        f = g["fuselage"]
+        lo[0] = min(lo[0], f["nose_x_m"] * k)
+        hi[0] = max(hi[0], (f["nose_x_m"] + f["length_m"]) * k)
+    span = hi - lo
+    mid = 0.5 * (hi + lo)
+    half = 0.5 * np.maximum(span, 0.25 * span.max()) * 1.05
+    for setter, j in ((ax.set_xlim, 0), (ax.set_ylim, 1), (ax.set_zlim, 2)):
+        setter(mid[j] - half[j], mid[j] + half[j])
     for s in g["surfaces"]:
         poly = np.hstack([s["le"], s["te"][:, ::-1]]).T * k
         ax.add_collection3d(Poly3DCollection([poly], facecolor="0.82", edgecolor="k", lw=0.6, alpha=0.9))
@@ -118,27 +130,18 @@ def plot_geometry(geometry_json, out_png, title=None, units="si", turns: float =
         ax.plot(*rim, "-", color="tab:blue", lw=1.2)
         c = np.asarray(r["center_m"], float)
         tw = np.linspace(0, turns * 2 * math.pi, int(120 * turns))
+        if pitch > 0:   # the wake inside the drawing box (it would spill over the axes)
+            tw = tw[(c[0] + pitch * tw / (2 * math.pi)) * k <= mid[0] + half[0]]
         for blade in range(B):
             ph = tw * r.get("spin", 1.0) + 2 * math.pi * blade / B
             ax.plot((c[0] + pitch * tw / (2 * math.pi)) * k, (c[1] + r["radius_m"] * np.cos(ph)) * k,
                     (c[2] + r["radius_m"] * np.sin(ph)) * k, color=col, lw=0.5, alpha=0.55)
-    pts = np.hstack([s["le"] for s in g["surfaces"]] + [s["te"] for s in g["surfaces"]]) * k
-    lo, hi = pts.min(axis=1), pts.max(axis=1)
-    if "fuselage" in g:
-        f = g["fuselage"]
-        lo[0] = min(lo[0], f["nose_x_m"] * k)
-        hi[0] = max(hi[0], (f["nose_x_m"] + f["length_m"]) * k)
-    span = hi - lo
-    mid = 0.5 * (hi + lo)
-    half = 0.5 * np.maximum(span, 0.25 * span.max()) * 1.05
-    for setter, j in ((ax.set_xlim, 0), (ax.set_ylim, 1), (ax.set_zlim, 2)):
-        setter(mid[j] - half[j], mid[j] + half[j])
     ax.set_box_aspect(tuple(half))
     ax.set_xlabel(us.label("x, aft from nose", "length"))
     ax.set_ylabel(us.label("y, spanwise", "length"))
     ax.set_zlabel(us.label("z, up", "length"))
     ax.view_init(elev=28, azim=-58)
-    sub = (f"lifting surfaces, fuselage (sketch), rotor disks and fixed wakes ({turns:g} turns per blade, "
+    sub = (f"lifting surfaces, fuselage (sketch), rotor disks and fixed wakes (up to {turns:g} turns per blade, "
            f"pitch {us.conv('length', pitch):.2f} {us.length_unit}, at mid-cruise)" if pitch
            else "lifting surfaces, fuselage (sketch), rotor disks")
     ax.set_title(f"{title or g.get('name', '')}\n{sub}", fontsize=10)

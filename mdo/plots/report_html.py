@@ -58,7 +58,9 @@ def _num(v) -> str:
     if isinstance(v, (int, float)):
         return "—" if not math.isfinite(v) else f"{v:.6g}"
     if isinstance(v, list):
-        return "[" + ", ".join(_num(x) for x in v) + "]" if len(v) <= 12 else f"[{len(v)} values]"
+        import numpy as np
+        flat = np.asarray(v, float).ravel().tolist()
+        return "[" + ", ".join(f"{x:.4g}" for x in flat) + "]" if len(flat) <= 12 else f"[{len(flat)} values]"
     return _e(v)
 
 
