@@ -13,7 +13,7 @@ from pathlib import Path
 
 import numpy as np
 
-__all__ = ["parse_ipopt_log", "plot_convergence", "write_convergence_csv", "COLUMNS"]
+__all__ = ["parse_ipopt_log", "plot_convergence", "convergence_csv", "write_convergence_csv", "COLUMNS"]
 
 _NUM = r"[-+]?(?:\d+\.?\d*(?:[eE][-+]?\d+)?|nan|inf)"
 # iter  objective  inf_pr  inf_du  lg(mu)  ||d||  lg(rg)  alpha_du  alpha_pr[tag]  ls
@@ -45,17 +45,22 @@ def parse_ipopt_log(path) -> dict:
     return out
 
 
-def write_convergence_csv(log_path, csv_path) -> int:
-    """``convergence.csv`` from the log's iteration lines (the numbers as printed); returns
-    the number of rows."""
+def convergence_csv(log_path) -> str:
+    """The text of ``convergence.csv``: the log's iteration lines, the numbers as printed."""
     h = parse_ipopt_log(log_path)
-    with open(csv_path, "w") as f:
-        f.write(",".join(COLUMNS) + ",restoration\n")
-        for i in range(h["iter"].size):
-            vals = [f"{int(h['iter'][i])}"] + [f"{h[k][i]:.10g}" for k in COLUMNS[1:-1]] + \
-                   [f"{int(h['ls'][i])}", "1" if h["restoration"][i] else "0"]
-            f.write(",".join(vals) + "\n")
-    return int(h["iter"].size)
+    lines = [",".join(COLUMNS) + ",restoration"]
+    for i in range(h["iter"].size):
+        vals = [f"{int(h['iter'][i])}"] + [f"{h[k][i]:.10g}" for k in COLUMNS[1:-1]] + \
+               [f"{int(h['ls'][i])}", "1" if h["restoration"][i] else "0"]
+        lines.append(",".join(vals))
+    return "\n".join(lines) + "\n"
+
+
+def write_convergence_csv(log_path, csv_path) -> int:
+    """Write :func:`convergence_csv` to ``csv_path``; returns the number of iteration rows."""
+    text = convergence_csv(log_path)
+    Path(csv_path).write_text(text)
+    return text.count("\n") - 1
 
 
 def plot_convergence(log_path, out_png, title: str | None = None):
