@@ -334,7 +334,7 @@ def solve_into(problem: Problem, folder, *, max_iter: int | None = None, verbose
                 traceback.print_exc()
     try:   # the page a designer opens, from the files just written (as ``mdo plot`` makes it)
         from ..plots.report_html import write_report_html
-        write_report_html(out)
+        write_report_html(folder)
     except Exception as exc:
         print(f"warning: report.html failed: {type(exc).__name__}: {exc}", file=sys.stderr)
     return solution

@@ -129,12 +129,13 @@ def plot_geometry(geometry_json, out_png, title=None, units="si", turns: float =
         col = f"C{(i + 3) % 10}"
         ax.plot(*rim, "-", color="tab:blue", lw=1.2)
         c = np.asarray(r["center_m"], float)
+        p_r, B_r = r.get("pitch_m", pitch), int(r.get("blades", B))   # per rotor group when given
         tw = np.linspace(0, turns * 2 * math.pi, int(120 * turns))
-        if pitch > 0:   # the wake inside the drawing box (it would spill over the axes)
-            tw = tw[(c[0] + pitch * tw / (2 * math.pi)) * k <= mid[0] + half[0]]
-        for blade in range(B):
-            ph = tw * r.get("spin", 1.0) + 2 * math.pi * blade / B
-            ax.plot((c[0] + pitch * tw / (2 * math.pi)) * k, (c[1] + r["radius_m"] * np.cos(ph)) * k,
+        if p_r > 0:   # the wake inside the drawing box (it would spill over the axes)
+            tw = tw[(c[0] + p_r * tw / (2 * math.pi)) * k <= mid[0] + half[0]]
+        for blade in range(B_r):
+            ph = tw * r.get("spin", 1.0) + 2 * math.pi * blade / B_r
+            ax.plot((c[0] + p_r * tw / (2 * math.pi)) * k, (c[1] + r["radius_m"] * np.cos(ph)) * k,
                     (c[2] + r["radius_m"] * np.sin(ph)) * k, color=col, lw=0.5, alpha=0.55)
     ax.set_box_aspect(tuple(half))
     ax.set_xlabel(us.label("x, aft from nose", "length"))

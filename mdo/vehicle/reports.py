@@ -149,22 +149,25 @@ def _geometry_numbers(vehicle, mission, solution, k: int) -> dict:
     f = vehicle.config.fuselage
     # drawing assumption: the fuselage top at the highest wing root (high wings, tandem tilt-wings)
     top_z = max(w.root_z_m for w in vehicle.lifting_wings)
-    R = float(_val(solution, vehicle.design["R"]))
-    bm = vehicle._last["bemt"]
     V = float(np.asarray(mission.cond.speed_mps)[0, k])
-    om = float(_val(solution, mission.unknowns[f"{vehicle.group.name}.omega"]).ravel()[k])
-    va = float(_val(solution, bm["va_mean_mps"]).ravel()[k])
-    rotors = []
-    for rot in vehicle.rotors:
-        c = rot.center if isinstance(rot.center, tuple) else [rot.center[i] for i in range(3)]
-        rotors.append({"center_m": [float(_val(solution, x)) for x in c], "radius_m": R, "spin": float(rot.spin),
-                       "axis": [float(a) for a in np.asarray(rot.axis, float).ravel()]})
+    rotors, pitch0 = [], None
+    for gm in vehicle.groups:
+        R = float(_val(solution, gm.design["R"]))
+        om = float(_val(solution, mission.unknowns[f"{gm.name}.omega"]).ravel()[k])
+        va = float(_val(solution, vehicle._last["rotors"][gm.name]["bemt"]["va_mean_mps"]).ravel()[k])
+        # helix pitch of the fixed wake: (V + mean induced axial velocity) per revolution
+        pitch = 2 * math.pi * (V + va) / max(om, 1e-6)
+        pitch0 = pitch if pitch0 is None else pitch0
+        for rot in vehicle.group_rotors[gm.name]:
+            c = rot.center if isinstance(rot.center, tuple) else [rot.center[i] for i in range(3)]
+            rotors.append({"group": gm.name, "center_m": [float(_val(solution, x)) for x in c], "radius_m": R,
+                           "spin": float(rot.spin), "blades": int(gm.config.blades), "pitch_m": pitch,
+                           "axis": [float(a) for a in np.asarray(rot.axis, float).ravel()]})
     return {"name": vehicle.name, "surfaces": surfaces,
             "fuselage": {"length_m": f.length_m, "width_m": f.width_m, "height_m": f.height_m, "nose_x_m": 0.0,
                          "axis_z_m": top_z - 0.5 * f.height_m},
-            "rotors": rotors, "blades": int(vehicle.group.blades),
-            # helix pitch of the fixed wake: (V + mean induced axial velocity) per revolution
-            "wake": {"pitch_m": 2 * math.pi * (V + va) / max(om, 1e-6), "node": int(k), "speed_mps": V},
+            "rotors": rotors, "blades": int(vehicle.groups[0].config.blades),   # the group of blade.csv
+            "wake": {"pitch_m": pitch0, "node": int(k), "speed_mps": V},
             "reference_area_m2": float(_val(solution, vehicle.S_ref)),
             "reference_chord_m": vehicle.config.main_wing.mean_aerodynamic_chord_m}
 
