@@ -762,14 +762,18 @@ class Solution:
         each through a temporary name and an atomic rename (a reader never sees half a file)."""
         out = Path(out_dir)
         out.mkdir(parents=True, exist_ok=True)
-        h = self.history
-        rows = ["iter,objective,inf_pr,inf_du\n"] + [
-            f"{i},{h['objective'][i]:.10g},{h['inf_pr'][i]:.6g},{h['inf_du'][i]:.6g}\n"
-            for i in range(len(h.get("objective", [])))]
         write_atomic(out / "solution.json", json.dumps(self.to_dict(), indent=1, default=_json_default))
         write_atomic(out / "summary.json", json.dumps(self.summary(), indent=1, default=_json_default))
         write_atomic(out / "summary.md", self.summary_markdown())
-        write_atomic(out / "convergence.csv", "".join(rows))
+        if (out / "ipopt.log").exists():   # one source: the iteration lines the log shows
+            from ..plots.convergence import convergence_csv
+            write_atomic(out / "convergence.csv", convergence_csv(out / "ipopt.log"))
+        else:                              # no log: the intermediate callback's history
+            h = self.history
+            rows = ["iter,objective,inf_pr,inf_du\n"] + [
+                f"{i},{h['objective'][i]:.10g},{h['inf_pr'][i]:.6g},{h['inf_du'][i]:.6g}\n"
+                for i in range(len(h.get("objective", [])))]
+            write_atomic(out / "convergence.csv", "".join(rows))
         return out
 
     def summary_markdown(self) -> str:

@@ -10,7 +10,8 @@ the run folder (``results/<problem-file-stem>/`` by default, ``.../analysis/`` f
 ``summary.json``     status, objective with unit, iterations, wall time, NLP size,
                      the problem's summary outputs (e.g. battery_energy_kWh)
 ``summary.md``       the same for people, with the worst constraint violations
-``convergence.csv``  objective, primal and dual infeasibility per iteration
+``convergence.csv``  the iteration lines of ipopt.log (objective, inf_pr, inf_du, lg_mu ...)
+``report.html``      one self-contained page: status, objective, constraints, design, figures
 plus whatever the problem's reports write (figures, mission.csv, ...).
 
 An existing run folder is never overwritten: ``force=True`` moves it aside to
@@ -331,6 +332,11 @@ def solve_into(problem: Problem, folder, *, max_iter: int | None = None, verbose
                   f"{type(exc).__name__}: {exc}", file=sys.stderr)
             if verbose:
                 traceback.print_exc()
+    try:   # the page a designer opens, from the files just written (as ``mdo plot`` makes it)
+        from ..plots.report_html import write_report_html
+        write_report_html(folder)
+    except Exception as exc:
+        print(f"warning: report.html failed: {type(exc).__name__}: {exc}", file=sys.stderr)
     return solution
 
 

@@ -11,7 +11,7 @@ def _cmd_plot(args) -> int:
     run = Path(args.run_dir)
     if not run.is_dir():
         raise InputError("RUN_DIR", f"{run} is not a folder (expected a run folder written by mdo run)")
-    made = render_run(run)
+    made = render_run(run, units=args.units)
     if not made:
         raise InputError("RUN_DIR", f"{run} holds no data to plot (ipopt.log, mission.csv, loading.csv, rotor.csv)")
     for p in made:
@@ -21,7 +21,10 @@ def _cmd_plot(args) -> int:
 
 def register(sub):
     p = sub.add_parser("plot", help="render the figures of a run folder",
-                       description="Render mission profile, spanwise loading, rotor performance and IPOPT "
-                                   "convergence figures (PNG) into a run folder.")
+                       description="Render mission profile, spanwise loading, rotor performance, geometry, "
+                                   "three-view and IPOPT convergence figures (PNG), convergence.csv, the design "
+                                   "checks and report.html into a run folder, from its files.")
     p.add_argument("run_dir", metavar="RUN_DIR")
+    p.add_argument("--units", choices=("si", "aviation"), default="si",
+                   help="unit system of every figure: si (m, m/s, kN, kW) or aviation (ft, kt TAS/EAS, lbf, kW)")
     p.set_defaults(func=_cmd_plot)
