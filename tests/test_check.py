@@ -64,7 +64,7 @@ def test_active_limits_with_multipliers(good):
     assert "## What limits the design" in md and "| x | bound | upper bound 10 m | 20 | m^2 per m |" in md
     sol = json.loads((good / "solution.json").read_text())
     g = {c["name"]: c for c in sol["constraints"]}
-    assert g["y_floor"]["kind"] == ">=" and g["y_floor"]["rhs"] == [0.5, 0.5] and g["cap"]["scale"] == 0.5
+    assert g["y_floor"]["kind"] == ">=" and g["y_floor"]["rhs"] == 0.5 and g["cap"]["scale"] == 0.5
     assert g["y_floor"]["labels"] == ["a", "b"] and len(g["y_floor"]["multiplier"]) == 2
 
 

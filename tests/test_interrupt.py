@@ -32,8 +32,8 @@ def wait_iterating(out: Path, sub: str = "", timeout: float = 120):
     raise AssertionError("IPOPT did not start iterating")
 
 
-@pytest.mark.parametrize("sig,code,status", [(signal.SIGINT, 130, "Interrupted_By_User"),
-                                             (signal.SIGTERM, 143, "Terminated_By_Signal")])
+# SIGTERM during a solve: tests/test_reliability_folders.py::test_lock_refuses_a_second_run_while_one_is_solving
+@pytest.mark.parametrize("sig,code,status", [(signal.SIGINT, 130, "Interrupted_By_User")])
 def test_signal_keeps_log_and_last_iterate(tmp_path, sig, code, status):
     out = tmp_path / "run"
     proc = _start(PROBLEM, "--out", out)

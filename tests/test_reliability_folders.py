@@ -74,10 +74,13 @@ def test_lock_refuses_a_second_run_while_one_is_solving(tmp_path):
         r = _mdo("run", BRACH, "--out", out, "--quiet", "--force")
         assert r.returncode == 2 and "another mdo run is writing it" in _one_line(r.stderr)
     finally:
-        a.send_signal(signal.SIGTERM)
-        a.communicate(timeout=120)
-    assert a.returncode == 143
-    assert json.loads((out / "summary.json").read_text())["problem"] == "slow_dense"
+        a.send_signal(signal.SIGTERM)   # handled like Ctrl-C: last iterate and log kept, exit 143
+        _, err = a.communicate(timeout=120)
+    assert a.returncode == 143 and "interrupted by SIGTERM" in err
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["problem"] == "slow_dense" and summary["status"] == "Terminated_By_Signal"
+    assert (out / "ipopt.log").exists()
+    assert len(json.loads((out / "solution.json").read_text())["variables"][0]["value"]) == 400
 
 
 def test_kill_9_leaves_the_earlier_run_intact(tmp_path, brach_run):

@@ -675,7 +675,7 @@ class Solution:
             m = lam[index[("g", g.name)]] * fs / g.scale
             constraints.append({"name": g.name, "kind": g.kind, "unit": g.unit, "scale": g.scale,
                                 "labels": g.labels, "lhs": _flat(val(g.lhs), g.size).tolist(),
-                                "rhs": _flat(val(g.rhs), g.size).tolist(), "multiplier": m.tolist()})
+                                "rhs": _compact(_flat(val(g.rhs), g.size)), "multiplier": m.tolist()})
         violations = [_worst_violation(c) for c in constraints]
         violations.sort(key=lambda d: -d["scaled"])
         obj = float(np.ravel(val(problem.objective))[0]) if problem.objective is not None else float("nan")
@@ -762,7 +762,8 @@ class Solution:
         each through a temporary name and an atomic rename (a reader never sees half a file)."""
         out = Path(out_dir)
         out.mkdir(parents=True, exist_ok=True)
-        write_atomic(out / "solution.json", json.dumps(self.to_dict(), indent=1, default=_json_default))
+        # solution.json is for programs (warm start, mdo check, plots): one line, no indent
+        write_atomic(out / "solution.json", json.dumps(self.to_dict(), default=_json_default))
         write_atomic(out / "summary.json", json.dumps(self.summary(), indent=1, default=_json_default))
         write_atomic(out / "summary.md", self.summary_markdown())
         if (out / "ipopt.log").exists():   # one source: the iteration lines the log shows
@@ -909,10 +910,23 @@ def element_label(var: dict, i: int) -> str:
     return f"element [{i % shape[0]}, {i // shape[0]}]"
 
 
+def _compact(a: np.ndarray):
+    """A list, or one number when every element is the same (most right-hand sides)."""
+    return float(a[0]) if a.size and np.all(a == a[0]) else a.tolist()
+
+
+def group_values(c: dict):
+    """(lhs, rhs) arrays of a constraint entry of solution.json (None -> NaN, rhs broadcast)."""
+    lhs = np.array([np.nan if x is None else x for x in c["lhs"]], dtype=float)
+    rhs = c["rhs"]
+    rhs = np.full(lhs.size, np.nan if rhs is None else float(rhs)) if not isinstance(rhs, list) else \
+        np.array([np.nan if x is None else x for x in rhs], dtype=float)
+    return lhs, rhs
+
+
 def group_residual(c: dict) -> np.ndarray:
     """Scaled residual (lhs - rhs) / scale of a constraint entry of solution.json."""
-    lhs = np.array([np.nan if x is None else x for x in c["lhs"]], dtype=float)
-    rhs = np.array([np.nan if x is None else x for x in c["rhs"]], dtype=float)
+    lhs, rhs = group_values(c)
     return (lhs - rhs) / float(c["scale"])
 
 
@@ -970,12 +984,13 @@ def active_limits(sol: "Solution") -> list:
         if c["kind"] == "==":
             continue
         r = group_residual(c)
+        lhs, rhs = group_values(c)
         slack = -r if c["kind"] == "<=" else r
         m = np.asarray([np.nan if x is None else x for x in c["multiplier"]], float)
         for i in np.flatnonzero(np.isfinite(slack) & (slack <= ACTIVE_SLACK)):
             out.append({"name": c["name"], "kind": "constraint", "where": c["labels"][i],
                         "multiplier": float(abs(m[i])), "unit": f"{fu} per {c['unit']}",
-                        "value": float(c["lhs"][i]), "limit": float(c["rhs"][i]), "design": False})
+                        "value": float(lhs[i]), "limit": float(rhs[i]), "design": False})
     return out
 
 
