@@ -74,7 +74,7 @@ def point_status(run_dir) -> str:
     if s is not None:
         return s["status"]
     base = _complete_summary(run_dir / "analysis")
-    if base is not None and not base.get("success"):
+    if base is not None and base.get("success") is False:
         return f"baseline {base['status']}"
     rec = read_json(run_dir / "point.json")
     if rec is None:

@@ -83,7 +83,7 @@ def _next_point(pending: list, done: list, grid: dict, warm_start: bool):
 class _Progress:
     """One line per finished point, readable in a log (no carriage returns)."""
 
-    def __init__(self, total: int, skipped: int, stream=sys.stdout):
+    def __init__(self, total: int, skipped: int, stream):
         self.total, self.done, self.failed = total, skipped, 0
         self.t0 = time.time()
         self.stream = stream
@@ -114,13 +114,14 @@ def _converged(run_dir: Path) -> bool:
 
 def run_sweep(problem, grid: dict, points: list, out, *, fixed: dict | None = None, workers: int = 2,
               scheduler: str | None = None, warm_start: bool = False, retry_failed: bool = False,
-              run_args=(), client=None, stream=sys.stdout) -> list:
+              run_args=(), client=None, stream=None) -> list:
     """Run every unfinished point of ``points`` into ``out/<point name>/``; returns the table rows.
 
     ``client``: an existing Dask client (tests); otherwise one from :func:`connect`,
     closed at the end.  ``sweep.json`` records the call; ``sweep.csv`` is rewritten
     after each point.
     """
+    stream = stream or sys.stdout
     out = Path(out)
     problem = Path(problem).resolve()
     dirs = {point_name(p): out / point_name(p) for p in points}
