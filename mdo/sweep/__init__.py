@@ -3,7 +3,7 @@
 Public API: :func:`parse_grid`, :func:`expand`, :func:`point_name` (grid),
 :func:`run_point` (one point = one ``mdo run`` subprocess), :func:`run_sweep` and
 :func:`connect` (the parallel driver), :func:`write_table` / :func:`read_table`
-(``sweep.csv``), :func:`line_plot` / :func:`carpet_plot`.  See ``README.md`` here.
+(``sweep.csv``), :func:`line_plot` / :func:`carpet_plot`. See the README section "Trade studies".
 Dask is imported only when a sweep runs in parallel.
 """
 from .grid import expand, parse_grid, point_name

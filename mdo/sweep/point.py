@@ -29,7 +29,7 @@ import sys
 import time
 from pathlib import Path
 
-__all__ = ["run_point", "read_json", "finished", "point_status", "write_json_atomic"]
+__all__ = ["run_point", "read_json", "finished", "point_status", "write_json_atomic", "git_commit"]
 
 # exit codes of `mdo run` that mean it ended by itself (see mdo/cli.py)
 _ENDED = (0, 1, 2)
@@ -83,6 +83,20 @@ def point_status(run_dir) -> str:
     if code == 2:
         return "input error"
     return f"crashed (exit {code})"
+
+
+def git_commit() -> str:
+    """The model version a point ran with: the commit of the checkout holding ``mdo``
+    (with '+dirty' when mdo/ or problems/ have uncommitted changes), '' outside git."""
+    root = Path(__file__).resolve().parents[2]
+    try:
+        commit = subprocess.run(["git", "-C", str(root), "rev-parse", "HEAD"], capture_output=True,
+                                text=True, timeout=10).stdout.strip()
+        dirty = subprocess.run(["git", "-C", str(root), "status", "--porcelain", "--", "mdo", "problems"],
+                               capture_output=True, text=True, timeout=10).stdout.strip()
+    except (OSError, subprocess.SubprocessError):
+        return ""
+    return commit + ("+dirty" if dirty and commit else "")
 
 
 def _die_with_parent():
@@ -140,6 +154,7 @@ def run_point(problem, run_dir, point: dict, fixed: dict | None = None, warm_sta
               "returncode": attempts[-1]["returncode"], "attempts": attempts,
               "warm_start": attempts[0]["warm_start"], "warm_start_used": attempts[-1]["warm_start"],
               "wall_time_s": round(time.time() - t0, 3), "host": os.uname().nodename,
+              "git_commit": git_commit(),
               "finished_utc": time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime())}
     write_json_atomic(run_dir / "point.json", record)
     record["status"] = point_status(run_dir)

@@ -23,7 +23,7 @@ from pathlib import Path
 
 from ..core.errors import InputError
 from .grid import point_name, structural_keys
-from .point import finished, read_json, run_point, write_json_atomic
+from .point import finished, git_commit, read_json, run_point, write_json_atomic
 from .table import write_table
 
 __all__ = ["connect", "run_sweep", "nearest_neighbour"]
@@ -112,6 +112,14 @@ def _converged(run_dir: Path) -> bool:
     return isinstance(s, dict) and bool(s.get("success")) and (run_dir / "solution.json").exists()
 
 
+def _shown(path: Path) -> str:
+    """``path`` relative to the working directory when below it (portable sweep.json)."""
+    try:
+        return str(path.relative_to(Path.cwd()))
+    except ValueError:
+        return str(path)
+
+
 def run_sweep(problem, grid: dict, points: list, out, *, fixed: dict | None = None, workers: int = 2,
               scheduler: str | None = None, warm_start: bool = False, retry_failed: bool = False,
               run_args=(), client=None, stream=None) -> list:
@@ -130,9 +138,9 @@ def run_sweep(problem, grid: dict, points: list, out, *, fixed: dict | None = No
     done = [{"point": p, "dir": dirs[point_name(p)]} for p in points
             if p not in pending and _converged(dirs[point_name(p)])]
     out.mkdir(parents=True, exist_ok=True)
-    write_json_atomic(out / "sweep.json", {"problem": str(problem), "grid": grid, "fixed": fixed or {},
+    write_json_atomic(out / "sweep.json", {"problem": _shown(problem), "grid": grid, "fixed": fixed or {},
                                            "run_args": list(run_args), "warm_start": warm_start,
-                                           "git_commit": _git_commit(problem)})
+                                           "git_commit": git_commit()})
     progress = _Progress(len(points), len(points) - len(pending), stream)
     print(f"sweep: {len(points)} points, {len(points) - len(pending)} already finished, "
           f"{len(pending)} to run -> {out}", file=stream, flush=True)
@@ -192,18 +200,3 @@ def _run_dask(client, scheduler, workers, pending, submit, finish) -> None:
             client.close()
             if cluster is not None:
                 cluster.close()
-
-
-def _git_commit(path: Path) -> str:
-    """The model version a sweep ran with: the commit of the checkout holding ``mdo`` (and
-    '+dirty' when it has uncommitted changes), or '' outside a git checkout."""
-    import subprocess
-    root = Path(__file__).resolve().parents[2]
-    try:
-        commit = subprocess.run(["git", "-C", str(root), "rev-parse", "HEAD"], capture_output=True,
-                                text=True, timeout=10).stdout.strip()
-        dirty = subprocess.run(["git", "-C", str(root), "status", "--porcelain", "--", "mdo", "problems"],
-                               capture_output=True, text=True, timeout=10).stdout.strip()
-    except (OSError, subprocess.SubprocessError):
-        return ""
-    return commit + ("+dirty" if dirty and commit else "")

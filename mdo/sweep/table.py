@@ -4,7 +4,7 @@ Columns, in order: ``point`` (run-folder name), the grid inputs, ``status``,
 ``success``, ``returncode``, ``iterations`` (the optimization stage),
 ``iterations_baseline`` (the baseline analysis stage, empty when warm-started),
 ``wall_time_s`` (the whole point, both stages and start-up), ``solve_time_s`` (IPOPT
-wall time of the stages), ``warm_start_from``, ``objective`` with ``objective_name`` and
+wall time of the stages), ``warm_start_from``, ``git_commit`` (the model version), ``objective`` with ``objective_name`` and
 ``objective_unit``, every scalar summary output of the problem (``battery_energy_kWh``,
 ``togw_kg``, ...), every design variable (a vector as ``name[i]``; values in the
 variable's unit, which the name or ``summary.md`` gives), and ``active`` (the active
@@ -72,6 +72,7 @@ def point_row(run_dir, point: dict) -> dict:
     row["solve_time_s"] = round(sum(stage_times), 3) if stage_times else None
     ws = rec.get("warm_start_used")
     row["warm_start_from"] = Path(ws).parent.name if ws else ""
+    row["git_commit"] = rec.get("git_commit", "")
     obj = s.get("objective") or {}
     row.update({"objective": obj.get("value"), "objective_name": obj.get("name"), "objective_unit": obj.get("unit")})
     for k, v in s.items():
