@@ -82,10 +82,10 @@ def test_finished_needs_a_complete_summary(tmp_path):
     (d / "summary.json").write_text(json.dumps({"status": "Solve_Succeeded", "objective": {"value": 1}}))
     assert finished(d)
     e = tmp_path / "q"
-    e.mkdir()
-    (e / "point.json").write_text(json.dumps({"returncode": -9}))
+    (tmp_path / ".points").mkdir()
+    (tmp_path / ".points" / "q.json").write_text(json.dumps({"returncode": -9}))
     assert not finished(e) and point_status(e) == "crashed (exit -9)"   # lost: run again
-    (e / "point.json").write_text(json.dumps({"returncode": 2}))
+    (tmp_path / ".points" / "q.json").write_text(json.dumps({"returncode": 2}))
     assert finished(e) and point_status(e) == "input error"             # ended by itself: kept
 
 
@@ -98,10 +98,10 @@ def test_failed_point_does_not_stop_the_others_and_resume_skips(tmp_path, capsys
     assert rows["nodes=8"]["status"] == "Solve_Succeeded" and rows["nodes=8"]["success"] is True
     assert rows["nodes=1"]["status"] == "input error" and rows["nodes=1"]["success"] is False
     assert "nodes=1: input error" in capsys.readouterr().out
-    stamp = (out / "nodes=8" / "point.json").stat().st_mtime_ns
+    stamp = (out / ".points" / "nodes=8.json").stat().st_mtime_ns
     assert main(["sweep", str(BRACH), "--grid", "nodes=1,8", "--out", str(out), "--workers", "0"]) == 1
     assert "2 already finished, 0 to run" in capsys.readouterr().out
-    assert (out / "nodes=8" / "point.json").stat().st_mtime_ns == stamp
+    assert (out / ".points" / "nodes=8.json").stat().st_mtime_ns == stamp
 
 
 # ---------------------------------------------------------------- acceptance

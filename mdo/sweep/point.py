@@ -8,15 +8,16 @@ library or a leak ends that process, not the Dask worker, and its memory is free
 The measured cost is the interpreter and import start-up, about 1-2 s a point
 (``tests/bench/sweep.py``), against solves of seconds to minutes.
 
-Files a point leaves besides the run folder of ``mdo run``:
+Files a point leaves beside its run folder (not inside: ``mdo run`` keeps its run
+folders to its own files):
 
-``sweep.log``   the point's stdout and stderr
-``point.json``  the sweep's record (inputs, command, exit code, wall time, warm start),
+``DIR/.points/<point>.log``   the point's stdout and stderr
+``DIR/.points/<point>.json``  the sweep's record (inputs, command, exit code, wall time, warm start),
                 written atomically (temporary file + rename) when the run ends, so a
                 killed sweep never leaves a half-written record.
 
 A point is *finished* when its ``summary.json`` is complete (parses and has a status)
-or its ``point.json`` records an ``mdo run`` that ended by itself (exit 0, 1 or 2);
+or its record (``.points/<point>.json``) records an ``mdo run`` that ended by itself (exit 0, 1 or 2);
 finished points are skipped by a resumed sweep.
 """
 from __future__ import annotations
@@ -29,10 +30,20 @@ import sys
 import time
 from pathlib import Path
 
-__all__ = ["run_point", "read_json", "finished", "point_status", "write_json_atomic", "git_commit"]
+__all__ = ["record_path", "log_path", "run_point", "read_json", "finished", "point_status", "write_json_atomic", "git_commit"]
 
 # exit codes of `mdo run` that mean it ended by itself (see mdo/cli.py)
 _ENDED = (0, 1, 2)
+
+
+def record_path(run_dir) -> Path:
+    run_dir = Path(run_dir)
+    return run_dir.parent / ".points" / f"{run_dir.name}.json"
+
+
+def log_path(run_dir) -> Path:
+    run_dir = Path(run_dir)
+    return run_dir.parent / ".points" / f"{run_dir.name}.log"
 
 
 def read_json(path):
@@ -63,7 +74,7 @@ def finished(run_dir) -> bool:
     run_dir = Path(run_dir)
     if _complete_summary(run_dir) is not None:
         return True
-    rec = read_json(run_dir / "point.json")
+    rec = read_json(record_path(run_dir))
     return isinstance(rec, dict) and rec.get("returncode") in _ENDED
 
 
@@ -76,7 +87,7 @@ def point_status(run_dir) -> str:
     base = _complete_summary(run_dir / "analysis")
     if base is not None and base.get("success") is False:
         return f"baseline {base['status']}"
-    rec = read_json(run_dir / "point.json")
+    rec = read_json(record_path(run_dir))
     if rec is None:
         return "not run"
     code = rec.get("returncode")
@@ -120,7 +131,7 @@ def _command(problem, run_dir, point, fixed, warm_start, run_args):
 
 def run_point(problem, run_dir, point: dict, fixed: dict | None = None, warm_start=None,
               run_args=(), timeout_s: float | None = None) -> dict:
-    """Run one point (blocking) and return its record (also written to ``point.json``).
+    """Run one point (blocking) and return its record (also written to ``DIR/.points/<point>.json``).
 
     ``warm_start``: a neighbour's ``solution.json``; then ``mdo run --warm-start`` skips the
     baseline stage.  If that run does not converge, the point is run again cold (baseline
@@ -128,8 +139,8 @@ def run_point(problem, run_dir, point: dict, fixed: dict | None = None, warm_sta
     lose a point.  ``run_args``: extra ``mdo run`` flags (``--max-iter``, ``--hessian``).
     """
     run_dir = Path(run_dir)
-    run_dir.mkdir(parents=True, exist_ok=True)
-    (run_dir / "point.json").unlink(missing_ok=True)
+    log_path(run_dir).parent.mkdir(parents=True, exist_ok=True)
+    record_path(run_dir).unlink(missing_ok=True)
     t0 = time.time()
     attempts = []
     for ws in ([warm_start, None] if warm_start is not None else [None]):
@@ -137,7 +148,7 @@ def run_point(problem, run_dir, point: dict, fixed: dict | None = None, warm_sta
         # --force: leftovers of an interrupted or warm attempt are replaced
         cmd.append("--force")
         t1 = time.time()
-        with open(run_dir / "sweep.log", "a") as log:
+        with open(log_path(run_dir), "a") as log:
             log.write(f"$ {' '.join(cmd)}\n")
             log.flush()
             try:
@@ -156,6 +167,6 @@ def run_point(problem, run_dir, point: dict, fixed: dict | None = None, warm_sta
               "wall_time_s": round(time.time() - t0, 3), "host": os.uname().nodename,
               "git_commit": git_commit(),
               "finished_utc": time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime())}
-    write_json_atomic(run_dir / "point.json", record)
+    write_json_atomic(record_path(run_dir), record)
     record["status"] = point_status(run_dir)
     return record

@@ -21,7 +21,7 @@ import os
 from pathlib import Path
 
 from .grid import point_name
-from .point import point_status, read_json
+from .point import point_status, read_json, record_path
 
 __all__ = ["point_row", "write_table", "read_table"]
 
@@ -61,7 +61,7 @@ def point_row(run_dir, point: dict) -> dict:
     run_dir = Path(run_dir)
     s = read_json(run_dir / "summary.json") or {}
     base = read_json(run_dir / "analysis" / "summary.json") or {}
-    rec = read_json(run_dir / "point.json") or {}
+    rec = read_json(record_path(run_dir)) or {}
     row = {"point": point_name(point), **point, "status": point_status(run_dir),
            "success": s.get("success", False), "returncode": rec.get("returncode")}
     staged = bool(base) and not rec.get("warm_start_used")
