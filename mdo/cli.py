@@ -34,6 +34,7 @@ _DISCIPLINE_CLIS = (
     "mdo.wake.cli",
     "mdo.powertrain.cli",
     "mdo.plots.cli",
+    "mdo.sweep.cli",
 )
 
 
