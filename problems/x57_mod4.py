@@ -30,8 +30,9 @@ Options (``-o KEY=VALUE``): ``nodes`` (6), ``cruise_distance_nmi`` (50),
 ``reserve_cruise_distance_nmi`` (5), ``cruise_altitude_ft`` (8000), ``cruise_speed_mph``
 (172), ``cells_parallel`` (40), ``coupling`` ("local"), ``wing_strips`` (20), ``n_stations`` (12).
 """
-from mdo.core.units import FT, INCH, MPH, NMI
-from mdo.mission.profiles import ga_mission
+from mdo.core.units import FT, INCH, KNOT, MPH, NMI
+from mdo.mission import Mission
+from mdo.mission.profiles import ga_segments
 from mdo.nlp import Problem
 from mdo.studies import minimize_battery_energy
 from mdo.vehicle.aircraft import Aircraft
@@ -39,6 +40,7 @@ from mdo.vehicle.config import (BatteryConfig, FuselageConfig, MotorConfig, Roto
                                 WingConfig)
 
 SEMISPAN_M = 31.6 * FT / 2
+APPROACH_SPEED_MPS = 1.3 * 58 * KNOT    # 1.3 x the published 58 kn stall speed (NASA fact sheet)
 
 
 def x57_mod4(cells_parallel: int = 40, cruise_speed_mps: float = 172 * MPH,
@@ -82,8 +84,12 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
     vehicle = Aircraft(cfg, free=("rotor", "wing"), n_stations=n_stations, wing_strips=wing_strips,
                        coupling=coupling, design_point_constraints=not analysis)
     folded = {s: {"highlift.active": 0.0} for s in ("CL", "CR", "D", "DL", "RCL", "RCR", "RD")}
-    mission = ga_mission(vehicle, nodes=nodes, cruise_distance_m=cruise_distance_nmi * NMI,
-                         reserve_cruise_distance_m=reserve_cruise_distance_nmi * NMI,
-                         cruise_altitude_m=cruise_altitude_ft * FT, cruise_speed_mps=cruise_speed_mph * MPH,
-                         approach_drag_area_m2=0.40, extra=folded).build(p)
+    segs = ga_segments(cruise_distance_m=cruise_distance_nmi * NMI,
+                       reserve_cruise_distance_m=reserve_cruise_distance_nmi * NMI,
+                       cruise_altitude_m=cruise_altitude_ft * FT, cruise_speed_mps=cruise_speed_mph * MPH,
+                       approach_drag_area_m2=0.40, extra=folded)
+    # the X-57's own approach: final at 1.3 x its 58 kn stall speed (75 kn), not Table 5's 78 mph
+    segs[-2].speed_end_mps = APPROACH_SPEED_MPS + 10 * KNOT    # base leg
+    segs[-1].speed_end_mps = APPROACH_SPEED_MPS                # final approach
+    mission = Mission(vehicle, segs, nodes=nodes, name="GA profile (Table 5), X-57 approach speeds").build(p)
     return minimize_battery_energy(p, vehicle, mission)
