@@ -119,6 +119,15 @@ def _nodes(nodes, name):
     return nodes
 
 
+def _check_cruise(altitude_m, speed_mps, floor_what: str, climb_start_mps: float):
+    """Cruise above 1000 ft (``floor_what``) and below 20 km, faster than the climb starts."""
+    if not (1000 * FT < altitude_m <= 20000.0):
+        raise InputError("cruise_altitude_m", f"above 1000 ft ({floor_what}) and <= 20000 m, got {altitude_m!r}")
+    if not (climb_start_mps < speed_mps < 250.0):
+        raise InputError("cruise_speed_mps", f"above the climb's start speed {climb_start_mps / MPH:.0f} mph "
+                         f"({climb_start_mps:.1f} m/s) and below 250 m/s, got {speed_mps!r}")
+
+
 def ga_segments(*, cruise_distance_m: float = 50 * NMI, reserve_cruise_distance_m: float = 5 * NMI,
                 cruise_altitude_m: float = 2500 * FT, cruise_speed_mps: float = 175 * MPH,
                 descent_end_speed_mps: float = 150 * MPH, downleg_acceleration_mps2: float = -0.2,
@@ -140,12 +149,7 @@ def ga_segments(*, cruise_distance_m: float = 50 * NMI, reserve_cruise_distance_
     n = lambda s: _nodes(nodes, s)  # noqa: E731
     if not (approach_drag_area_m2 >= 0.0 and approach_drag_area_m2 < 10.0):
         raise InputError("approach_drag_area_m2", f"must be in [0, 10) m^2, got {approach_drag_area_m2!r}")
-    if not (1000 * ft < cruise_altitude_m <= 20000.0):
-        raise InputError("cruise_altitude_m", f"above 1000 ft (the downleg altitude) and <= 20000 m, "
-                         f"got {cruise_altitude_m!r}")
-    if not (110 * mph < cruise_speed_mps < 250.0):
-        raise InputError("cruise_speed_mps", f"above the climb's start speed 110 mph (49.2 m/s) and below 250 m/s, "
-                         f"got {cruise_speed_mps!r}")
+    _check_cruise(cruise_altitude_m, cruise_speed_mps, "the downleg altitude", 110 * mph)
     for name, v in (("takeoff_flap", takeoff_flap), ("landing_flap", landing_flap)):
         if not 0.0 <= v <= 1.0:
             raise InputError(name, f"a flap deflection in [0, 1], got {v!r}")
@@ -213,12 +217,7 @@ def evtol_segments(*, cruise_distance_m: float = 50 * NMI, reserve_cruise_distan
     ft, mph, fpm = FT, MPH, FT_PER_MIN
     n = lambda s: _nodes(nodes, s)  # noqa: E731
     tp = transition_pitch or {}
-    if not (1000 * ft < cruise_altitude_m <= 20000.0):
-        raise InputError("cruise_altitude_m", f"above 1000 ft (the reserve altitude) and <= 20000 m, "
-                         f"got {cruise_altitude_m!r}")
-    if not (125 * mph < cruise_speed_mps < 250.0):
-        raise InputError("cruise_speed_mps", f"above the climb's start speed 125 mph (55.9 m/s) and below 250 m/s, "
-                         f"got {cruise_speed_mps!r}")
+    _check_cruise(cruise_altitude_m, cruise_speed_mps, "the reserve altitude", 125 * mph)
 
     def p(wma, bc, transition=False):
         out = {"wing_mounted_angle_rad": wma * DEG, "pitch_command_rad": bc * DEG}
