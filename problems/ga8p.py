@@ -18,6 +18,21 @@ from mdo.vehicle.aircraft import Aircraft
 from mdo.vehicle.catalog import ga8p
 
 
+# allowed values of the -o options (mdo.nlp.options; `mdo run problems/ga8p.py --options`)
+OPTIONS = {
+    "nodes": (int, 3, 30),
+    "cruise_distance_nmi": (float, 1.0, 300.0),
+    "reserve_cruise_distance_nmi": (float, 1.0, 100.0),
+    "n_stations": (int, 6, 40),
+    "wing_strips": (int, 8, 60),
+    "approach_drag_area_m2": (float, 0.0, 2.0),
+    "mass_model": (str, "buildup", "fixed"),
+    "rotation": (str, "inboard_up", "outboard_up"),
+    "coupling": (str, "swirl", "local", "freestream"),
+    "wake_samples": (int, 1, 15),
+}
+
+
 def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 50.0,
           reserve_cruise_distance_nmi: float = 5.0, n_stations: int = 16, wing_strips: int = 24,
           mass_model: str = "buildup", rotation: str = "inboard_up", coupling: str = "swirl",

@@ -25,6 +25,22 @@ from mdo.vehicle.aircraft import Aircraft
 from mdo.vehicle.catalog import ttw
 
 
+# allowed values of the -o options (mdo.nlp.options; `mdo run problems/ttw.py --options`)
+OPTIONS = {
+    "nodes": (int, 3, 30),
+    "cruise_distance_nmi": (float, 1.0, 300.0),
+    "reserve_cruise_distance_nmi": (float, 1.0, 100.0),
+    "n_stations": (int, 6, 40),
+    "n_azimuth": (int, 1, 12),
+    "wing_strips": (int, 8, 60),
+    "tol": (float, 1e-10, 1e-2),
+    "mass_model": (str, "buildup", "fixed"),
+    "rotation": (str, "inboard_up", "outboard_up"),
+    "coupling": (str, "swirl", "local", "freestream"),
+    "wake_samples": (int, 1, 15),
+}
+
+
 def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 50.0,
           reserve_cruise_distance_nmi: float = 5.0, n_stations: int = 16, n_azimuth: int = 4,
           wing_strips: int = 16, mass_model: str = "buildup", rotation: str = "inboard_up",

@@ -23,6 +23,7 @@ import sys
 import traceback
 from pathlib import Path
 
+from .options import check_options
 from .problem import Problem, Solution
 
 __all__ = ["RunError", "load_problem_file", "default_out_dir", "run_problem", "RESULT_FILES"]
@@ -43,9 +44,15 @@ def _import_file(path: Path):
     sys.modules[name] = module
     try:
         spec.loader.exec_module(module)
-    except Exception as exc:  # the user's file: report, do not crash
-        raise RunError(f"problem file {path} failed to import: {type(exc).__name__}: {exc}") from exc
+    except (Exception, SystemExit) as exc:  # the user's file: report, do not crash (nor exit 0 with it)
+        raise RunError(f"problem file {path} failed to import: {_failure(exc)}") from exc
     return module
+
+
+def _failure(exc) -> str:
+    if isinstance(exc, SystemExit):
+        return f"it called sys.exit({exc.code!r}); a problem file must not exit"
+    return f"{type(exc).__name__}: {exc}"
 
 
 def load_problem_file(path, *, analysis: bool = False, options: dict | None = None) -> Problem:
@@ -64,16 +71,15 @@ def load_problem_file(path, *, analysis: bool = False, options: dict | None = No
     takes_kwargs = any(p.kind == p.VAR_KEYWORD for p in params.values())
     if "analysis" in params or takes_kwargs:
         options["analysis"] = analysis
-    unknown = [k for k in options if k not in params and not takes_kwargs]
-    if unknown:
-        raise RunError(f"problem file {path}: build() has no option {unknown[0]!r}; "
-                       f"its options are {', '.join(params) or 'none'}")
+    options = check_options(module, build, options, path)  # keys, types, ranges (mdo.nlp.options)
     try:
         problem = build(**options)
     except RunError:
         raise
-    except Exception as exc:
-        raise RunError(f"problem file {path}: build() failed: {type(exc).__name__}: {exc}") from exc
+    except (Exception, SystemExit) as exc:
+        raise RunError(f"problem file {path}: build() failed: {_failure(exc)}") from exc
+    if problem is None:
+        raise RunError(f"problem file {path}: build() returned nothing (None), expected an mdo.nlp.Problem")
     if not isinstance(problem, Problem):
         raise RunError(f"problem file {path}: build() returned {type(problem).__name__}, "
                        f"expected an mdo.nlp.Problem")
