@@ -111,7 +111,10 @@ def _allowed(t, spec) -> str:
         return f"{'an integer' if t is int else 'a number'} in [{spec[1]:g}, {spec[2]:g}]"
     if spec and t is str:
         return "one of " + ", ".join(spec[1:])
-    return {bool: "true or false", int: "an integer", float: "a number", str: "a string"}.get(t, "any value")
+    if t in (int, float):
+        return (f"{'an integer' if t is int else 'a number'} in [{-UNDECLARED_LIMIT:g}, {UNDECLARED_LIMIT:g}] "
+                f"(the file declares no range in OPTIONS)")
+    return {bool: "true or false", str: "a string"}.get(t, "any value (untyped)")
 
 
 def check_options(module, build, options: dict, path) -> dict:
