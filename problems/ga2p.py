@@ -4,20 +4,28 @@
 Table 5 with respect to the Adkins-Liebeck inputs of the propellers (design thrust,
 design speed, tip radius, design cl), the main wing's span, taper and five section
 twists at constant reference area, and the propellers' span position, subject to the
-design-point tip Mach <= 0.6, disk clearance and the mission itself, in one IPOPT
-solve.  ``--analysis`` freezes the design at Table 3's initial values.
+mission and every operating limit at every node (motor power, torque and speed with
+the motors sized, throttle, tip Mach <= 0.6, cell current and voltage, no battery
+charging, the wing's stall margin with flaps on take-off and approach, 20 % state of
+charge left at the end), in one IPOPT solve.  ``--analysis`` freezes the design at
+Table 3's initial values (the motors are still sized; the tip-Mach limit is reported
+but not enforced: the frozen blade violates it in the climb).
 
 Options (``-o KEY=VALUE``): ``nodes`` per segment (6), ``cruise_distance_nmi`` (50),
-``reserve_cruise_distance_nmi`` (5), ``n_stations`` (16), ``wing_strips`` (24),
-``mass_model`` ("buildup" or "fixed"), ``rotation`` ("inboard_up"), ``coupling`` ("swirl",
-"local" or "freestream": how the wake enters the wing forces, see mdo/wake/README.md),
-``approach_drag_area_m2`` (0: the propellers windmill for all the braking the base leg and
-final approach need, as in the paper; ``mdo.vehicle.catalog.GA_APPROACH_DRAG_AREA_M2`` =
-0.40 m^2 lets the pilot add gear and flap drag there, a control per node), ``wake_samples``
-(5: points across each lattice strip at which the propeller wake is averaged; 1 = at the
-control point only, which makes the energy ripple with the rotor position).
+``reserve_cruise_distance_nmi`` (5), ``cruise_altitude_ft`` (2500), ``cruise_speed_mph``
+(175), ``cells_series`` (120) and ``cells_parallel`` (80) of the battery, ``n_stations``
+(16), ``wing_strips`` (24), ``mass_model`` ("buildup" or "fixed"), ``rotation``
+("inboard_up"), ``coupling`` ("swirl", "local" or "freestream": how the wake enters the
+wing forces, see mdo/wake/README.md), ``swirl_recovery`` ("bounded": the swirl credit
+never exceeds the swirl power the slipstreams carry; "unbounded"), ``limits`` (true),
+``tip_mach_limit`` ("nodes", "design_point" or "off"), ``allow_regeneration`` (false),
+``max_span_m`` (none: a hangar/gate limit), ``approach_drag_area_m2`` (0.40 m^2, ``GA_APPROACH_DRAG_AREA_M2``:
+gear and flap drag the pilot may add on BL and FA, a control per node; without it and
+without battery charging the clean airframe cannot slow down on the base leg), ``wake_samples`` (5).
 """
-from mdo.core.units import NMI
+from dataclasses import replace
+
+from mdo.core.units import FT, MPH, NMI
 from mdo.mission.profiles import ga_mission
 from mdo.nlp import Problem
 from mdo.studies import minimize_battery_energy
@@ -41,14 +49,22 @@ OPTIONS = {
 
 
 def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 50.0,
-          reserve_cruise_distance_nmi: float = 5.0, n_stations: int = 16, wing_strips: int = 24,
-          mass_model: str = "buildup", rotation: str = "inboard_up", coupling: str = "swirl",
-          approach_drag_area_m2: float = 0.0, wake_samples: int = 5):
+          reserve_cruise_distance_nmi: float = 5.0, cruise_altitude_ft: float = 2500.0,
+          cruise_speed_mph: float = 175.0, cells_series: int = 120, cells_parallel: int = 80,
+          n_stations: int = 16, wing_strips: int = 24, mass_model: str = "buildup", rotation: str = "inboard_up",
+          coupling: str = "swirl", swirl_recovery: str = "bounded", limits: bool = True,
+          tip_mach_limit: str = "nodes", allow_regeneration: bool = False, max_span_m: float | None = None,
+          approach_drag_area_m2: float = 0.40, wake_samples: int = 5):
     p = Problem("ga2p", "GA-2P whole-mission optimization (Clarke et al. Eq. 7)")
-    vehicle = Aircraft(ga2p(rotation), n_stations=n_stations, wing_strips=wing_strips, mass_model=mass_model,
-                       coupling=coupling, design_point_constraints=not analysis,
-                       wake_samples=wake_samples)
+    cfg = ga2p(rotation)
+    cfg = replace(cfg, battery=replace(cfg.battery, cells_series=cells_series, cells_parallel=cells_parallel),
+                  cruise_speed_mps=cruise_speed_mph * MPH, cruise_altitude_m=cruise_altitude_ft * FT)
+    vehicle = Aircraft(cfg, n_stations=n_stations, wing_strips=wing_strips, mass_model=mass_model,
+                       coupling=coupling, swirl_recovery=swirl_recovery, limits=limits,
+                       tip_mach_limit=tip_mach_limit, allow_regeneration=allow_regeneration, max_span_m=max_span_m,
+                       design_point_constraints=not analysis, wake_samples=wake_samples)
     mission = ga_mission(vehicle, nodes=nodes, cruise_distance_m=cruise_distance_nmi * NMI,
                          reserve_cruise_distance_m=reserve_cruise_distance_nmi * NMI,
+                         cruise_altitude_m=cruise_altitude_ft * FT, cruise_speed_mps=cruise_speed_mph * MPH,
                          approach_drag_area_m2=approach_drag_area_m2).build(p)
     return minimize_battery_energy(p, vehicle, mission)

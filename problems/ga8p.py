@@ -2,15 +2,16 @@
 
 As ``problems/ga2p.py``, but the propellers' span positions are held fixed and equally
 spaced (as in the paper); the design variables are the propellers' Adkins-Liebeck
-inputs and the wing's span, taper and section twists.  The initial design violates
-the tip-Mach constraint (Table 3's footnote), so ``--analysis`` flies it as given and
-the optimization starts infeasible.
+inputs and the wing's span, taper and section twists, with every operating limit at
+every node.  The initial design violates the tip-Mach constraint (Table 3's footnote),
+so ``--analysis`` flies it as given (the limit reported, not enforced) and the
+optimization starts infeasible.
 
-Options (``-o KEY=VALUE``): ``nodes`` per segment (6), ``cruise_distance_nmi`` (50),
-``reserve_cruise_distance_nmi`` (5), ``n_stations`` (16), ``wing_strips`` (24),
-``mass_model``, ``rotation``, ``coupling``, ``approach_drag_area_m2``, ``wake_samples`` (as GA-2P).
+Options (``-o KEY=VALUE``): as ``problems/ga2p.py``.
 """
-from mdo.core.units import NMI
+from dataclasses import replace
+
+from mdo.core.units import FT, MPH, NMI
 from mdo.mission.profiles import ga_mission
 from mdo.nlp import Problem
 from mdo.studies import minimize_battery_energy
@@ -34,14 +35,22 @@ OPTIONS = {
 
 
 def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 50.0,
-          reserve_cruise_distance_nmi: float = 5.0, n_stations: int = 16, wing_strips: int = 24,
-          mass_model: str = "buildup", rotation: str = "inboard_up", coupling: str = "swirl",
-          approach_drag_area_m2: float = 0.0, wake_samples: int = 5):
+          reserve_cruise_distance_nmi: float = 5.0, cruise_altitude_ft: float = 2500.0,
+          cruise_speed_mph: float = 175.0, cells_series: int = 120, cells_parallel: int = 80,
+          n_stations: int = 16, wing_strips: int = 24, mass_model: str = "buildup", rotation: str = "inboard_up",
+          coupling: str = "swirl", swirl_recovery: str = "bounded", limits: bool = True,
+          tip_mach_limit: str = "nodes", allow_regeneration: bool = False, max_span_m: float | None = None,
+          approach_drag_area_m2: float = 0.40, wake_samples: int = 5):
     p = Problem("ga8p", "GA-8P whole-mission optimization (Clarke et al. Eq. 7)")
-    vehicle = Aircraft(ga8p(rotation), free=("rotor", "wing"), n_stations=n_stations, wing_strips=wing_strips,
-                       mass_model=mass_model, coupling=coupling, design_point_constraints=not analysis,
-                       wake_samples=wake_samples)
+    cfg = ga8p(rotation)
+    cfg = replace(cfg, battery=replace(cfg.battery, cells_series=cells_series, cells_parallel=cells_parallel),
+                  cruise_speed_mps=cruise_speed_mph * MPH, cruise_altitude_m=cruise_altitude_ft * FT)
+    vehicle = Aircraft(cfg, free=("rotor", "wing"), n_stations=n_stations, wing_strips=wing_strips,
+                       mass_model=mass_model, coupling=coupling, swirl_recovery=swirl_recovery, limits=limits,
+                       tip_mach_limit=tip_mach_limit, allow_regeneration=allow_regeneration, max_span_m=max_span_m,
+                       design_point_constraints=not analysis, wake_samples=wake_samples)
     mission = ga_mission(vehicle, nodes=nodes, cruise_distance_m=cruise_distance_nmi * NMI,
                          reserve_cruise_distance_m=reserve_cruise_distance_nmi * NMI,
+                         cruise_altitude_m=cruise_altitude_ft * FT, cruise_speed_mps=cruise_speed_mph * MPH,
                          approach_drag_area_m2=approach_drag_area_m2).build(p)
     return minimize_battery_energy(p, vehicle, mission)

@@ -9,15 +9,22 @@ positions (shared by both wings), subject to the design-point tip Mach <= 0.6, d
 clearance and the mission, in one IPOPT solve.  ``--analysis`` freezes the design at
 Table 3's initial values.
 
+Every operating limit applies at every node (as ``problems/ga2p.py``); the transition
+segments carry no stall limit (post-stall strips instead).
+
 Options (``-o KEY=VALUE``): ``nodes`` per segment (6), ``cruise_distance_nmi`` (50),
-``reserve_cruise_distance_nmi`` (5), ``n_stations`` (16), ``n_azimuth`` (4, transition
+``reserve_cruise_distance_nmi`` (5), ``cruise_altitude_ft``, ``cruise_speed_mph``,
+``cells_series``/``cells_parallel`` (150/120), ``swirl_recovery``, ``limits``,
+``tip_mach_limit``, ``allow_regeneration`` (as GA-2P), ``n_stations`` (16), ``n_azimuth`` (4, transition
 segments only), ``wing_strips`` (16 per wing), ``mass_model``, ``rotation``, ``coupling``, ``wake_samples`` (5, as GA-2P),
 ``tol`` (IPOPT's tolerance, 1e-4 here, 1e-6 for the GA problems: at the TTW optimum the
 dual infeasibility stalls at a noise floor of 1e-5 to 3e-4 while the objective holds
 its first 9 digits and the barrier parameter is at its floor, 1e-11 — with 1e-6 IPOPT
 ends "Solved To Acceptable Level" at the same point after some 30 iterations at that floor).
 """
-from mdo.core.units import NMI
+from dataclasses import replace
+
+from mdo.core.units import FT, MPH, NMI
 from mdo.mission.profiles import evtol_mission
 from mdo.nlp import Problem
 from mdo.studies import minimize_battery_energy
@@ -42,15 +49,24 @@ OPTIONS = {
 
 
 def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 50.0,
-          reserve_cruise_distance_nmi: float = 5.0, n_stations: int = 16, n_azimuth: int = 4,
-          wing_strips: int = 16, mass_model: str = "buildup", rotation: str = "inboard_up",
-          coupling: str = "swirl", wake_samples: int = 5, tol: float = 1e-4):
+          reserve_cruise_distance_nmi: float = 5.0, cruise_altitude_ft: float = 2500.0,
+          cruise_speed_mph: float = 175.0, cells_series: int = 150, cells_parallel: int = 120,
+          n_stations: int = 16, n_azimuth: int = 4, wing_strips: int = 16, mass_model: str = "buildup",
+          rotation: str = "inboard_up", coupling: str = "swirl", swirl_recovery: str = "bounded",
+          limits: bool = True, tip_mach_limit: str = "nodes", allow_regeneration: bool = False,
+          wake_samples: int = 5, tol: float = 1e-4):
     p = Problem("ttw", "TTW tandem tilt-wing whole-mission optimization (Clarke et al. Eq. 7)")
-    vehicle = Aircraft(ttw(rotation), n_stations=n_stations, n_azimuth=n_azimuth, wing_strips=wing_strips,
-                       mass_model=mass_model, coupling=coupling, design_point_constraints=not analysis,
-                       wake_samples=wake_samples)
+    cfg = ttw(rotation)
+    cfg = replace(cfg, battery=replace(cfg.battery, cells_series=cells_series, cells_parallel=cells_parallel),
+                  cruise_speed_mps=cruise_speed_mph * MPH, cruise_altitude_m=cruise_altitude_ft * FT)
+    vehicle = Aircraft(cfg, n_stations=n_stations, n_azimuth=n_azimuth, wing_strips=wing_strips,
+                       mass_model=mass_model, coupling=coupling, swirl_recovery=swirl_recovery, limits=limits,
+                       tip_mach_limit=tip_mach_limit, allow_regeneration=allow_regeneration,
+                       design_point_constraints=not analysis, wake_samples=wake_samples)
     mission = evtol_mission(vehicle, nodes=nodes, cruise_distance_m=cruise_distance_nmi * NMI,
-                            reserve_cruise_distance_m=reserve_cruise_distance_nmi * NMI).build(p)
+                            reserve_cruise_distance_m=reserve_cruise_distance_nmi * NMI,
+                            cruise_altitude_m=cruise_altitude_ft * FT,
+                            cruise_speed_mps=cruise_speed_mph * MPH).build(p)
     p = minimize_battery_energy(p, vehicle, mission)
     p.ipopt_options["tol"] = float(tol)
     p.ipopt_options["acceptable_tol"] = max(1e-3, 10 * float(tol))

@@ -32,3 +32,19 @@ def test_bemt_block_in_user_opti(capsys):
     assert "rpm" in capsys.readouterr().out
     assert 100 < sol.value(omega) < 1500 and abs(sol.value(pitch)) < 0.2
     assert math.isfinite(sol.value(out["power_W"]))
+
+
+def test_own_aircraft_example_runs_and_reads_back(capsys):
+    ns = {}
+    exec(compile(_block("own-aircraft"), "README example", "exec"), ns)
+    run, sol = ns["run"], ns["solution"]
+    assert sol.success and run.success
+    assert run.objective[0] == pytest.approx(sol.objective, rel=1e-12)
+    togw, unit = run.value("togw_kg")
+    assert unit == "kg" and 1000 < togw < 3000
+    # the renamed wing is designed, the battery is the 120s x 64p the user asked for
+    assert run.value("wing.span")[0] == pytest.approx(11.4)
+    assert run.value("battery_mass_kg")[0] == pytest.approx(120 * 64 * 0.048 * 1.42)
+    cr = run.segment("CR")
+    assert np.all(cr["shaft_power_W"] > 0)
+    assert "Solve_Succeeded" in capsys.readouterr().out

@@ -120,43 +120,71 @@ def _nodes(nodes, name):
 
 
 def ga_segments(*, cruise_distance_m: float = 50 * NMI, reserve_cruise_distance_m: float = 5 * NMI,
+                cruise_altitude_m: float = 2500 * FT, cruise_speed_mps: float = 175 * MPH,
                 descent_end_speed_mps: float = 150 * MPH, downleg_acceleration_mps2: float = -0.2,
-                approach_drag_area_m2: float = 0.0, nodes=None) -> list:
+                approach_drag_area_m2: float = 0.0, takeoff_flap: float = 0.5, landing_flap: float = 1.0,
+                extra: dict | None = None, nodes=None) -> list:
     """The GA profile of Table 5 (DER ... FA), resolved as described in the module docstring.
 
+    ``cruise_altitude_m``, ``cruise_speed_mps``: the climb ends and the cruise flies
+    there (Table 5: 2500 ft, 175 mph); ``cruise_distance_m``, ``reserve_cruise_distance_m``.
     ``nodes`` is None (the mission default), a number for every segment, or a
     dict segment symbol -> number.  ``approach_drag_area_m2`` > 0 lets the vehicle
     deploy up to that much flat-plate drag area (gear, flap) on BL and FA.
+    ``takeoff_flap`` (DER, ICA) and ``landing_flap`` (BL half of it, FA): the flap
+    deflection (0-1) the segments fly with; it raises the stall limit of flapped strips
+    (``mdo.vehicle.stall``).  ``extra``: more segment parameters per segment symbol,
+    e.g. ``{"CR": {"highlift.active": 0.0}}`` (a vehicle's own parameters).
     """
     ft, mph, fpm = FT, MPH, FT_PER_MIN
     n = lambda s: _nodes(nodes, s)  # noqa: E731
     if not (approach_drag_area_m2 >= 0.0 and approach_drag_area_m2 < 10.0):
         raise InputError("approach_drag_area_m2", f"must be in [0, 10) m^2, got {approach_drag_area_m2!r}")
-    approach = {"drag_device_area_m2": float(approach_drag_area_m2)} if approach_drag_area_m2 > 0 else None
+    if not (1000 * ft < cruise_altitude_m <= 20000.0):
+        raise InputError("cruise_altitude_m", f"above 1000 ft (the downleg altitude) and <= 20000 m, "
+                         f"got {cruise_altitude_m!r}")
+    if not (110 * mph < cruise_speed_mps < 250.0):
+        raise InputError("cruise_speed_mps", f"above the climb's start speed 110 mph (49.2 m/s) and below 250 m/s, "
+                         f"got {cruise_speed_mps!r}")
+    for name, v in (("takeoff_flap", takeoff_flap), ("landing_flap", landing_flap)):
+        if not 0.0 <= v <= 1.0:
+            raise InputError(name, f"a flap deflection in [0, 1], got {v!r}")
+    ex = dict(extra or {})
+
+    def par(sym, **kw):
+        out = {k: float(v) for k, v in kw.items() if v}
+        out.update(ex.get(sym, {}))
+        return out or None
+    dev = {"drag_device_area_m2": float(approach_drag_area_m2)} if approach_drag_area_m2 > 0 else {}
     return [
         LinearSpeedConstantRate("DER", altitude_start_m=0.0, altitude_end_m=50 * ft, speed_start_mps=91 * mph,
                                 speed_end_mps=100 * mph, climb_rate_mps=600 * fpm, nodes=n("DER"),
+                                parameters=par("DER", flap_deflection=takeoff_flap),
                                 description="departure end of runway"),
         LinearSpeedConstantRate("ICA", altitude_end_m=500 * ft, speed_end_mps=110 * mph, climb_rate_mps=600 * fpm,
-                                nodes=n("ICA"), description="initial climb area"),
-        LinearSpeedConstantRate("CL", altitude_end_m=2500 * ft, speed_end_mps=175 * mph, climb_rate_mps=500 * fpm,
-                                nodes=n("CL"), description="climb"),
-        ConstantSpeedConstantAltitude("CR", distance_m=cruise_distance_m, nodes=n("CR"), description="cruise"),
+                                nodes=n("ICA"), parameters=par("ICA", flap_deflection=takeoff_flap),
+                                description="initial climb area"),
+        LinearSpeedConstantRate("CL", altitude_end_m=cruise_altitude_m, speed_end_mps=cruise_speed_mps,
+                                climb_rate_mps=500 * fpm, nodes=n("CL"), parameters=par("CL"), description="climb"),
+        ConstantSpeedConstantAltitude("CR", distance_m=cruise_distance_m, nodes=n("CR"), parameters=par("CR"),
+                                      description="cruise"),
         LinearSpeedConstantRate("D", altitude_end_m=1000 * ft, speed_end_mps=descent_end_speed_mps,
-                                climb_rate_mps=-300 * fpm, nodes=n("D"), description="descent"),
+                                climb_rate_mps=-300 * fpm, nodes=n("D"), parameters=par("D"), description="descent"),
         ConstantAccelerationConstantAltitude("DL", speed_end_mps=100 * mph,
-                                             acceleration_mps2=downleg_acceleration_mps2, nodes=n("DL"),
+                                             acceleration_mps2=downleg_acceleration_mps2, nodes=n("DL"), parameters=par("DL"),
                                              description="downleg"),
         LinearSpeedConstantRate("RCL", altitude_end_m=1500 * ft, speed_end_mps=150 * mph, climb_rate_mps=500 * fpm,
-                                nodes=n("RCL"), description="reserve climb"),
-        ConstantSpeedConstantAltitude("RCR", distance_m=reserve_cruise_distance_m, nodes=n("RCR"),
+                                nodes=n("RCL"), parameters=par("RCL"), description="reserve climb"),
+        ConstantSpeedConstantAltitude("RCR", distance_m=reserve_cruise_distance_m, nodes=n("RCR"), parameters=par("RCR"),
                                       description="reserve cruise"),
         LinearSpeedConstantRate("RD", altitude_end_m=1000 * ft, speed_end_mps=135 * mph, climb_rate_mps=-300 * fpm,
-                                nodes=n("RD"), description="reserve descent"),
+                                nodes=n("RD"), parameters=par("RD"), description="reserve descent"),
         LinearSpeedConstantRate("BL", altitude_end_m=500 * ft, speed_end_mps=90 * mph, climb_rate_mps=-300 * fpm,
-                                nodes=n("BL"), parameters=approach, description="baseleg"),
+                                nodes=n("BL"), parameters=par("BL", flap_deflection=0.5 * landing_flap, **dev),
+                                description="baseleg"),
         LinearSpeedConstantRate("FA", altitude_end_m=0.0, speed_end_mps=78 * mph, climb_rate_mps=-300 * fpm,
-                                nodes=n("FA"), parameters=approach, description="final approach"),
+                                nodes=n("FA"), parameters=par("FA", flap_deflection=landing_flap, **dev),
+                                description="final approach"),
     ]
 
 
@@ -168,6 +196,7 @@ def ga_mission(vehicle, *, nodes: int = DEFAULT_NODES, state_form: str = "differ
 
 
 def evtol_segments(*, cruise_distance_m: float = 50 * NMI, reserve_cruise_distance_m: float = 5 * NMI,
+                   cruise_altitude_m: float = 2500 * FT, cruise_speed_mps: float = 175 * MPH,
                    vertical_transition_acceleration_mps2: float = 9.80665 / 5,
                    climb_transition_acceleration_mps2: float = 9.80665 / 5,
                    descent_transition_acceleration_mps2: float = -0.5,
@@ -176,14 +205,26 @@ def evtol_segments(*, cruise_distance_m: float = 50 * NMI, reserve_cruise_distan
 
     ``transition_pitch``: None (body angle free in VT and DT) or a dict
     ``{"VT": (initial_rad or None, final_rad), "DT": (...)}`` prescribing a
-    linear pitch schedule.
+    linear pitch schedule.  ``cruise_altitude_m``/``cruise_speed_mps``: where CL ends
+    and CR flies (Table 5: 2500 ft, 175 mph).  The transition segments (VC, VT,
+    CT1, CT2, AT, DT, VD) keep the wing's post-stall model and carry no stall limit
+    (``stall_margin_cl`` = -1); the wing-borne segments do.
     """
     ft, mph, fpm = FT, MPH, FT_PER_MIN
     n = lambda s: _nodes(nodes, s)  # noqa: E731
     tp = transition_pitch or {}
+    if not (1000 * ft < cruise_altitude_m <= 20000.0):
+        raise InputError("cruise_altitude_m", f"above 1000 ft (the reserve altitude) and <= 20000 m, "
+                         f"got {cruise_altitude_m!r}")
+    if not (125 * mph < cruise_speed_mps < 250.0):
+        raise InputError("cruise_speed_mps", f"above the climb's start speed 125 mph (55.9 m/s) and below 250 m/s, "
+                         f"got {cruise_speed_mps!r}")
 
-    def p(wma, bc):
-        return {"wing_mounted_angle_rad": wma * DEG, "pitch_command_rad": bc * DEG}
+    def p(wma, bc, transition=False):
+        out = {"wing_mounted_angle_rad": wma * DEG, "pitch_command_rad": bc * DEG}
+        if transition:
+            out["stall_margin_cl"] = -1.0
+        return out
 
     def pitch(sym):
         if sym in tp:
@@ -192,20 +233,20 @@ def evtol_segments(*, cruise_distance_m: float = 50 * NMI, reserve_cruise_distan
 
     return [
         VerticalAscent("VC", altitude_start_m=0.0, altitude_end_m=40 * ft, climb_rate_mps=300 * fpm,
-                       parameters=p(90, -5), nodes=n("VC"), description="vertical climb"),
+                       parameters=p(90, -5, True), nodes=n("VC"), description="vertical climb"),
         ConstantAccelerationConstantPitchrateConstantAltitude(
             "VT", speed_start_mps=300 * fpm, speed_end_mps=55 * mph,
-            acceleration_mps2=vertical_transition_acceleration_mps2, parameters=p(45, 3), nodes=n("VT"),
+            acceleration_mps2=vertical_transition_acceleration_mps2, parameters=p(45, 3, True), nodes=n("VT"),
             description="vertical transition", **pitch("VT")),
         ConstantAccelerationConstantAngleLinearClimb("CT1", altitude_end_m=100 * ft, speed_end_mps=85 * mph,
-                                                     climb_rate_mps=500 * fpm, parameters=p(15, 5), nodes=n("CT1"),
+                                                     climb_rate_mps=500 * fpm, parameters=p(15, 5, True), nodes=n("CT1"),
                                                      description="climb transition no. 1"),
         ConstantAccelerationConstantAngleLinearClimb("CT2", altitude_end_m=100 * ft, speed_end_mps=125 * mph,
                                                      acceleration_mps2=climb_transition_acceleration_mps2,
-                                                     parameters=p(15, 5), nodes=n("CT2"),
+                                                     parameters=p(15, 5, True), nodes=n("CT2"),
                                                      description="climb transition no. 2"),
-        LinearSpeedConstantRate("CL", altitude_end_m=2500 * ft, speed_end_mps=175 * mph, climb_rate_mps=500 * fpm,
-                                parameters=p(0, 16), nodes=n("CL"), description="climb"),
+        LinearSpeedConstantRate("CL", altitude_end_m=cruise_altitude_m, speed_end_mps=cruise_speed_mps,
+                                climb_rate_mps=500 * fpm, parameters=p(0, 16), nodes=n("CL"), description="climb"),
         ConstantSpeedConstantAltitude("CR", distance_m=cruise_distance_m, parameters=p(0, 20), nodes=n("CR"),
                                       description="cruise"),
         LinearSpeedConstantRate("D", altitude_end_m=100 * ft, speed_end_mps=125 * mph, climb_rate_mps=-300 * fpm,
@@ -217,12 +258,12 @@ def evtol_segments(*, cruise_distance_m: float = 50 * NMI, reserve_cruise_distan
         LinearSpeedConstantRate("RD", altitude_end_m=100 * ft, speed_end_mps=125 * mph, climb_rate_mps=-300 * fpm,
                                 parameters=p(0, 16), nodes=n("RD"), description="reserve descent"),
         ConstantAccelerationConstantAngleLinearClimb("AT", altitude_end_m=40 * ft, speed_end_mps=55 * mph,
-                                                     climb_rate_mps=-200 * fpm, parameters=p(0, 16), nodes=n("AT"),
+                                                     climb_rate_mps=-200 * fpm, parameters=p(0, 16, True), nodes=n("AT"),
                                                      description="approach transition"),
         ConstantAccelerationConstantPitchrateConstantAltitude(
             "DT", speed_end_mps=300 * fpm, acceleration_mps2=descent_transition_acceleration_mps2,
-            parameters=p(25, 10), nodes=n("DT"), description="descent transition", **pitch("DT")),
-        VerticalDescent("VD", altitude_end_m=0.0, descent_rate_mps=300 * fpm, parameters=p(90, -5), nodes=n("VD"),
+            parameters=p(25, 10, True), nodes=n("DT"), description="descent transition", **pitch("DT")),
+        VerticalDescent("VD", altitude_end_m=0.0, descent_rate_mps=300 * fpm, parameters=p(90, -5, True), nodes=n("VD"),
                         description="vertical descent"),
     ]
 

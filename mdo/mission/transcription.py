@@ -56,7 +56,10 @@ DEFAULT_NODES = 6
 
 #: Segment parameters the mission always knows (Table 5's WMA x beta_c); a vehicle
 #: may declare more in ``vehicle.parameters``.
-STANDARD_PARAMETERS = {"wing_mounted_angle_rad": 0.0, "pitch_command_rad": 0.0}
+STANDARD_PARAMETERS = {"wing_mounted_angle_rad": 0.0, "pitch_command_rad": 0.0,
+                       # flap deflection 0-1 and the stall limit's cl margin (negative: no stall
+                       # limit, e.g. tilt-wing transitions); a vehicle without these ignores them
+                       "flap_deflection": 0.0, "stall_margin_cl": 0.1}
 
 
 @dataclass
@@ -321,9 +324,12 @@ class Mission:
         for grp in ev.residuals:
             expr = grp.expr
             rows = int(expr.shape[0])
+            cols = list(range(K)) if getattr(grp, "columns", None) is None else [int(c) for c in grp.columns]
+            if not cols:
+                continue
             rl = list(grp.row_labels) if grp.row_labels is not None else (
                 [f"row {r}" for r in range(rows)] if rows > 1 else [""])
-            lab = [f"{labels[k]} {rl[r]}".rstrip() for k in range(K) for r in range(rows)]
+            lab = [f"{labels[k]} {rl[r]}".rstrip() for k in cols for r in range(rows)]
             problem.constrain(f"{P}{grp.name}", expr, kind=grp.kind, scale=grp.scale, unit=grp.unit, labels=lab)
 
         # ---- state collocation
@@ -346,6 +352,9 @@ class Mission:
         self.segment_end_states = [{k: x[0, g.state0 + g.n - 1] for k, x in state_vars.items()} for g in self._segs]
         self.segment_start_states = [{k: x[0, g.state0] for k, x in state_vars.items()} for g in self._segs]
         self.energy_used_J = veh.energy_used_J(self.initial_states, self.final_states)
+        for grp in (veh.final_limits(self.final_states) if hasattr(veh, "final_limits") else []):
+            problem.constrain(f"{P}{grp.name}", grp.expr, kind=grp.kind, scale=grp.scale, unit=grp.unit,
+                              labels=list(grp.row_labels or ["end of mission"]))
         self.segment_energy_J = ca.vertcat(*[veh.energy_used_J(a, b) for a, b in
                                              zip(self.segment_start_states, self.segment_end_states)])
         self.duration_s = sum(durations[1:], durations[0]) if len(durations) > 1 else durations[0]

@@ -17,7 +17,7 @@ Public surface:
 from .cell import CellModel, load_discharge_data, nmc18650
 from .esc import ESC_EFFICIENCY, esc_input_power_W
 from .motor import DCMotor, motor_function, motor_mass_ndarc_kg, size_dc_motor
-from .network import (NODE_INPUTS, NODE_OUTPUTS, PAPER_POWERTRAINS, Powertrain, paper_powertrain,
+from .network import (Bus, MotorGroup, NODE_INPUTS, NODE_OUTPUTS, PAPER_POWERTRAINS, Powertrain, paper_powertrain,
                       propeller_torque_law)
 from .pack import PACKAGING_FACTOR_X57, Pack
 
@@ -26,6 +26,6 @@ __all__ = [
     "Pack", "PACKAGING_FACTOR_X57",
     "DCMotor", "size_dc_motor", "motor_mass_ndarc_kg", "motor_function",
     "ESC_EFFICIENCY", "esc_input_power_W",
-    "Powertrain", "paper_powertrain", "PAPER_POWERTRAINS", "propeller_torque_law",
+    "Bus", "MotorGroup", "Powertrain", "paper_powertrain", "PAPER_POWERTRAINS", "propeller_torque_law",
     "NODE_INPUTS", "NODE_OUTPUTS",
 ]

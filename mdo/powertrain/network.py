@@ -33,10 +33,10 @@ import numpy as np
 from ..core import units as u
 from ..core.errors import InputError, check_positive, check_range
 from .esc import ESC_EFFICIENCY, ESC_SMOOTHING_W, esc_input_power_W
-from .motor import DCMotor, size_dc_motor
+from .motor import DCMotor, motor_current, size_dc_motor
 from .pack import Pack
 
-__all__ = ["Powertrain", "NODE_INPUTS", "NODE_OUTPUTS", "paper_powertrain", "PAPER_POWERTRAINS",
+__all__ = ["Bus", "MotorGroup", "Powertrain", "NODE_INPUTS", "NODE_OUTPUTS", "paper_powertrain", "PAPER_POWERTRAINS",
            "propeller_torque_law"]
 
 NODE_INPUTS = ("torque_Nm", "omega_radps", "soc", "battery_current_A", "aux_power_W",
@@ -378,3 +378,102 @@ def paper_powertrain(name: str, rated_rpm: float | None = None, temperature_C: f
     motor = size_dc_motor(d["rated_power_W"], rpm * u.RPM, rated_voltage_fraction * pack.nominal_voltage_V,
                           **motor_kw)
     return Powertrain(pack, motor, d["n_motors"], aux_power_W=aux_power_W, name=key.replace("-", "").lower())
+
+
+@dataclass
+class MotorGroup:
+    """``n_motors`` identical motors, each with its ESC, driving one rotor group."""
+
+    name: str
+    motor: DCMotor
+    n_motors: int
+    esc_efficiency: float = ESC_EFFICIENCY
+
+
+@dataclass
+class Bus:
+    """One pack feeding several motor groups and the auxiliary loads (the general network).
+
+    At the nodes, for each group's per-motor torque ``Q_g`` and speed ``omega_g``
+    (rows 1 x K; numbers or CasADi), and the pack current ``I_b`` (the one
+    unknown, Eq. N1)::
+
+        I_g = I0 + Kv Q_g,  V_g = omega_g / Kv + I_g R         (M1, M2)
+        P_bus = sum_g n_g esc_in(V_g I_g) + P_aux              (E2)
+        V_pack(s, I_b) I_b - P_bus = 0                         (N1)
+        throttle_g = V_g / V_pack <= 1                          (E1)
+
+    The expressions are elementwise, so rows of K nodes are evaluated in one call.
+    """
+
+    pack: Pack
+    groups: list
+    aux_power_W: float = 0.0
+    esc_smoothing_W: float = ESC_SMOOTHING_W
+
+    @property
+    def power_scale_W(self) -> float:
+        total = 0.0
+        for g in self.groups:
+            p = g.motor.rated_power_W
+            total += g.n_motors * (float(p) if _is_numeric(p) else 0.0)
+        return total if total > 0 else float(self.pack.nominal_voltage_V * self.pack.max_current_A * 0.5)
+
+    @property
+    def current_scale_A(self) -> float:
+        return self.power_scale_W / float(self.pack.nominal_voltage_V)
+
+    def battery_current_unknown(self) -> dict:
+        imax = float(self.pack.max_current_A)
+        return {"name": "battery_current_A", "unit": "A", "scale": self.current_scale_A,
+                "lower": -imax, "upper": 3.0 * imax,
+                "description": "pack current, root of V_pack(s, I) I = P_bus (Eq. N1)"}
+
+    def motor_outputs(self, group: MotorGroup, torque_Nm, omega_radps) -> dict:
+        m = group.motor
+        i_m = motor_current(torque_Nm, m.kv_radps_per_V, m.no_load_current_A)
+        v_m = omega_radps / m.kv_radps_per_V + i_m * m.resistance_ohm
+        p_m = v_m * i_m
+        p_esc = esc_input_power_W(p_m, group.esc_efficiency, self.esc_smoothing_W)
+        return {"motor_current_A": i_m, "motor_voltage_V": v_m, "motor_power_in_W": p_m,
+                "shaft_power_W": torque_Nm * omega_radps, "esc_power_in_W": p_esc}
+
+    def evaluate(self, torques, omegas, soc, battery_current_A) -> dict:
+        """Per group (``out["groups"][name]``) and pack outputs, as in ``NODE_OUTPUTS``."""
+        pk = self.pack
+        per = {g.name: self.motor_outputs(g, q, w) for g, q, w in zip(self.groups, torques, omegas)}
+        p_bus = self.aux_power_W
+        for g in self.groups:
+            p_bus = p_bus + g.n_motors * per[g.name]["esc_power_in_W"]
+        ib = battery_current_A
+        i_cell = ib / pk.n_parallel
+        v_cell = pk.cell.voltage(soc, i_cell, pk.temperature_C)
+        u_cell = pk.cell.ocv(soc)
+        v_pack = pk.n_series * v_cell
+        u_pack = pk.n_series * u_cell
+        for g in self.groups:
+            o = per[g.name]
+            o["throttle"] = o["motor_voltage_V"] / v_pack
+            o["voltage_margin_V"] = v_pack - o["motor_voltage_V"]
+        return {"groups": per, "bus_power_W": p_bus, "pack_voltage_V": v_pack, "pack_ocv_V": u_pack,
+                "cell_voltage_V": v_cell, "cell_current_A": i_cell,
+                "c_rate": i_cell / pk.cell.capacity_nominal_Ah,
+                "battery_power_W": v_pack * ib, "chemical_power_W": u_pack * ib,
+                "loss_power_W": (u_pack - v_pack) * ib, "power_balance_W": v_pack * ib - p_bus,
+                "soc_rate_per_s": pk.cell.soc_rate(i_cell, pk.temperature_C)}
+
+    def analyze(self, torques, omegas, soc) -> dict:
+        """Numbers: explicit motors, bracketed pack current (Eq. N1); adds ``battery_current_A``."""
+        s = np.atleast_1d(np.asarray(soc, float))
+        p_bus = self.aux_power_W
+        for g, q, w in zip(self.groups, torques, omegas):
+            p_bus = p_bus + g.n_motors * np.asarray(self.motor_outputs(g, np.asarray(q, float),
+                                                                       np.asarray(w, float))["esc_power_in_W"])
+        p_bus, s = np.broadcast_arrays(np.atleast_1d(p_bus), s)
+        ib = np.atleast_1d(self.pack.current_for_power(p_bus, s))
+        out = self.evaluate([np.asarray(q, float) for q in torques], [np.asarray(w, float) for w in omegas], s, ib)
+        out["battery_current_A"] = ib
+        return out
+
+    def energy_used_J(self, soc_initial, soc_final):
+        return self.pack.energy_used_J(soc_initial, soc_final)

@@ -1,10 +1,13 @@
-"""The paper's aircraft as a mission vehicle: every discipline at every node.
+"""Any propeller-driven aircraft as a mission vehicle: every discipline at every node.
 
 ``Aircraft(config)`` implements the vehicle protocol of ``mdo.vehicle.base`` for a
-:class:`~mdo.vehicle.config.VehicleConfig` (GA-2P, GA-8P, TTW).  At setup it adds
-the design variables of Eq. 7 (Adkins-Liebeck inputs per rotor group, wing span,
-taper and section twists at constant reference area, rotor span positions) and
-the gross weight, and builds the design-dependent parts once:
+:class:`~mdo.vehicle.config.VehicleConfig` - the paper's GA-2P, GA-8P and TTW are
+data like any other.  Everything is read from the definition (wing roles, rotor
+groups with their motors, battery, fuselage, nacelles); nothing depends on a name.
+At setup it adds the design variables of Eq. 7 (Adkins-Liebeck inputs and span
+positions per rotor group, wing span, taper and section twists at constant
+reference area), the motor ratings (sized) and the gross weight, and builds the
+design-dependent parts once:
 
 * the blades: Adkins-Liebeck as residuals (design-level unknowns ``w``, ``alpha_i``),
   giving chord and twist at the BEMT stations (``mdo.rotor``);
@@ -24,9 +27,22 @@ inflow angles and pack current as unknowns:
 4. one vortex-lattice solve for all nodes: ``A(d) [G_1..G_K] = [b_1..b_K]``, with the
    wake in the flow tangency and the "swirl" force coupling (``mdo.wake`` README);
 5. drag build-up: strip profile drag, fuselage, nacelles, fin;
-6. powertrain: motor, ESC, pack current balance, state-of-charge rate;
+6. powertrain (``mdo.powertrain.Bus``): each group's motors and ESCs on one pack,
+   the pack current balance, state-of-charge rate;
 7. forces in the path frame: lift, drag, thrust and in-plane rotor force along the
-   tilted rotor axis.
+   tilted rotor axis;
+8. the operating limits, each a named inequality group at every node (on by
+   default): motor power, torque and speed, throttle, tip Mach (``rotor_group``),
+   cell current and voltage, no battery charging unless allowed, the wing's stall
+   margin (``stall``), and the state of charge left at the end (``final_limits``).
+
+Swirl recovery: with the "swirl" coupling the wing's bound vortices see the
+slipstreams' swirl, and the Kutta-Joukowski force along the flight path is a
+thrust (negative near-field drag).  That credit is bounded by the rotational
+kinetic-energy flux the slipstreams carry (``RotorGroupModel.swirl_power_W``):
+the credited power is ``smooth_min(P_recovered, P_available)`` (width 2 % of the
+available power + 10 W), so no node gains more from the swirl than is there; both
+are outputs (``swirl_recovered_power_W``, ``swirl_available_power_W``).
 
 Frames: the mission's path frame (x forward, z up); the wing and wake use body
 axes with x aft, y starboard, z up (``mdo.wing``).
@@ -43,15 +59,15 @@ from ..core import units as u
 from ..core.atmosphere import atmosphere
 from ..core.errors import InputError
 from ..core.smooth import smooth_max, smooth_min
-from ..powertrain import paper_powertrain
-from ..rotor import (PHI_MAX_RAD, PHI_MIN_RAD, adkins_liebeck, add_adkins_liebeck,
-                     bemt_function, section)
+from ..powertrain import Bus
 from ..wake import WakeRotor, influence_sum_parts, spin_for, wake_influences
 from ..wing import VLM, Body, body_drag, constant_area, profile_drag, trapezoid
 from ..wing.drag import form_factor_wing, skin_friction
-from .base import G0, NodeEvaluation, Output, ResidualGroup, State, Unknown
-from .config import VehicleConfig, WingConfig
+from .base import G0, NodeEvaluation, Output, ResidualGroup, State
+from .config import VehicleConfig, WingConfig, disks_in_one_plane
 from .mass import MassDesign, solve_togw, total_mass
+from .rotor_group import RotorGroupModel, section_name
+from .stall import stall_correction, stall_margin_rows
 
 __all__ = ["Aircraft", "DesignBounds"]
 
@@ -60,19 +76,21 @@ __all__ = ["Aircraft", "DesignBounds"]
 class DesignBounds:
     """Bounds of the design variables, as factors of the baseline (or absolute where noted).
 
-    The paper gives no bounds.  Its GA-2P optimum has a span of exactly 13.00 m, which we
-    read as the upper bound (1.14 x 11.4 m) and apply as the same factor to every wing;
-    the others are ordinary engineering ranges (a tapered wing between 0.35 and
-    rectangular; design speeds within -40 %/+30 % of the baseline, as Table 3's
-    optima move at most 18 %; design cl of NACA 4412 sections 0.4-1.0, below stall).
+    These are ranges of validity of the models, not results: no bound is taken from a
+    published optimum.  Span is held by what it costs (the wing weight, Raymer Eq.
+    15.46, grows with AR^0.6) and by ``Aircraft(max_span_m=...)`` when the user has a
+    hangar or gate limit; taper by the stall margin of the tip strips (cl_max falls
+    with the tip chord's Reynolds number) - the box 0.2-1.0 only keeps the planform
+    a trapezoid.  Design speeds within -40 %/+30 % of the baseline; design cl of the
+    blade sections 0.4-1.0, below stall.
     """
-    design_thrust: tuple = (0.5, 2.0)
+    design_thrust: tuple = (0.3, 3.0)
     design_speed: tuple = (0.6, 1.3)
-    tip_radius: tuple = (0.6, 1.6)
+    tip_radius: tuple = (0.5, 1.6)
     design_cl: tuple = (0.4, 1.0)          # absolute
-    span: tuple = (0.8, 13.0 / 11.4)
-    taper: tuple = (0.35, 1.0)             # absolute
-    twist_deg: tuple = (-5.0, 8.0)         # absolute
+    span: tuple = (0.6, 1.6)
+    taper: tuple = (0.2, 1.0)              # absolute
+    twist_deg: tuple = (-8.0, 8.0)         # absolute
     span_eta: tuple = (0.0, 1.0)           # absolute (fraction of the semispan)
     tip_clearance_m: float = 0.05          # between neighbouring disks, and disk to symmetry plane
 
@@ -88,15 +106,8 @@ def _num(x) -> np.ndarray:
     return np.asarray(ca.DM(x), dtype=float)
 
 
-def _cols(v, idx, K):
-    """Columns ``idx`` of a 1 x K row (or a scalar)."""
-    if isinstance(v, (ca.MX, ca.SX, ca.DM)) and v.shape[1] == K and K > 1:
-        return v[:, list(idx)]
-    return v
-
-
 class Aircraft:
-    """A configuration of ``mdo.vehicle.catalog`` flying a mission (see module docstring).
+    """A :class:`VehicleConfig` flying a mission (see the module docstring).
 
     Parameters
     ----------
@@ -105,415 +116,591 @@ class Aircraft:
         Adkins-Liebeck inputs), ``"wing"`` (span, taper, twists of every lifting
         wing), ``"positions"`` (rotor span positions).  All are created as design
         variables either way (``--analysis`` freezes them); the others are fixed.
-    n_stations : BEMT stations per blade.  ``n_azimuth``: azimuth positions (1 for
-        axial flow; the tilt-wing uses 4 for its transitions).
+        Motor ratings are sized in every stage (``MotorConfig.sized``).
+    n_stations : BEMT stations per blade.  ``n_azimuth``: azimuth positions for the
+        rotors of tilting wings in transition (default 4 for a tilt-wing).
     wing_strips, tail_strips, nchord : lattice size (strips per semispan, chordwise panels).
     coupling : ``"swirl"`` (default; see mdo/wake/README.md), ``"freestream"`` or ``"local"``.
-    mass_model : ``"buildup"`` (gross weight follows the design) or ``"fixed"``
-        (the baseline build-up's gross weight, as the paper's optimization keeps it).
-    powertrain_limits : add throttle <= 1, cell current and cell voltage limits.
+    mass_model : ``"buildup"`` (gross weight follows the design) or ``"fixed"``.
+    limits : the operating limits at every node (module docstring); on by default.
+    tip_mach_limit : ``"nodes"`` (every node, default), ``"design_point"`` (the
+        Adkins-Liebeck point only) or ``"off"``; with ``design_point_constraints=False``
+        (the analysis of a frozen design that violates them) only reported.
+    stall_margin_cl : the default cl margin of the stall limit (S1 of ``stall``); a
+        segment parameter ``stall_margin_cl`` overrides it (negative: off there).
+    allow_regeneration : let windmilling charge the battery (default off: pack current >= 0).
+    swirl_recovery : ``"bounded"`` (default) or ``"unbounded"`` (the near-field credit as is).
+    max_span_m : a hangar/gate limit on every lifting wing's span (None: none).
     wake_samples : points across each lattice strip over which the propeller wake is
         averaged (default 5; 1 = at the control point, which makes the energy ripple
         with the rotor position, see mdo/README.md).
-    Segments may set ``drag_device_area_m2`` (gear/flap drag on approach, a control).
+    Segments may set ``drag_device_area_m2`` (gear/flap drag on approach, a control),
+    ``flap_deflection`` (0-1, raises the stall limit of flapped strips) and
+    ``<group>.active`` (0: that rotor group stopped/folded there).
     """
 
     def __init__(self, config: VehicleConfig, *, free=("rotor", "wing", "positions"), n_stations: int = 16,
                  n_azimuth: int | None = None, wing_strips: int = 20, tail_strips: int = 6, nchord: int = 1,
-                 coupling: str = "swirl", mass_model: str = "buildup", powertrain_limits: bool = False,
+                 coupling: str = "swirl", mass_model: str = "buildup", limits: bool = True,
+                 tip_mach_limit: str = "nodes", stall_margin_cl: float = 0.1, allow_regeneration: bool = False,
+                 swirl_recovery: str = "bounded", max_span_m: float | None = None,
                  misc_drag_fraction: float = 0.05, bounds: DesignBounds | None = None,
                  positions_free: bool | None = None, design_point_constraints: bool = True,
                  wing_stall: bool | None = None, slipstream_breaks: bool = False, wake_samples: int = 5):
-        """See the class docstring; ``design_point_constraints=False`` leaves out the
-        tip-Mach and disk-clearance constraints (analysis of a violating design)."""
-        if coupling not in ("swirl", "freestream", "local"):
-            raise InputError("coupling", f"'swirl', 'freestream' or 'local', got {coupling!r}")
-        if mass_model not in ("buildup", "fixed"):
-            raise InputError("mass_model", f"'buildup' or 'fixed', got {mass_model!r}")
-        unknown_free = set(free) - {"rotor", "wing", "positions"}
-        if unknown_free:
-            raise InputError("free", f"unknown design groups {sorted(unknown_free)}; allowed rotor, wing, positions")
-        if len(config.rotor_groups) != 1:
-            raise InputError("rotor_groups", "this vehicle model supports one rotor group (all motors identical)")
+        self._check_options(config, free, coupling, mass_model, tip_mach_limit, swirl_recovery, wake_samples,
+                            stall_margin_cl, max_span_m)
         self.config = config
         self.name = config.name
         self.free = set(free)
         self.n_stations = int(n_stations)
         self.n_azimuth = int(n_azimuth or (4 if config.kind == "tilt_wing" else 1))
-        self.wing_strips = int(wing_strips)
-        self.tail_strips = int(tail_strips)
-        self.nchord = int(nchord)
+        self.wing_strips, self.tail_strips, self.nchord = int(wing_strips), int(tail_strips), int(nchord)
         self.coupling = coupling
         self.mass_model = mass_model
-        self.powertrain_limits = bool(powertrain_limits)
+        self.limits_on = bool(limits)
+        self.tip_mach_limit = tip_mach_limit
+        self.stall_margin_cl = float(stall_margin_cl)
+        self.allow_regeneration = bool(allow_regeneration)
+        self.swirl_recovery = swirl_recovery
+        self.max_span_m = None if max_span_m is None else float(max_span_m)
         # post-stall strips (tilt-wing transitions); the linear lattice elsewhere
         self.wing_stall = (config.kind == "tilt_wing") if wing_stall is None else bool(wing_stall)
-        # Strip boundaries at the slipstream edges move with the rotors, but the strip
-        # counts between them are fixed by the baseline: when a rotor moves far (GA-2P's
-        # optimum moves it from 0.23 to 0.8 of the semispan) an interval keeps one strip.
-        # The default is a fixed cosine lattice; the averaged wake is smooth (cored
-        # sheets), so lift and drag stay smooth in the rotor position.
         self.slipstream_breaks = bool(slipstream_breaks)
         # wake velocity averaged over this many points across each strip (1: at the
-        # control point).  At the control point alone the mission energy ripples by
-        # +-0.35 kWh (GA-2P) as a rotor's slipstream edge crosses the strips, and the
-        # optimizer parks the rotor in a ripple trough; 5 samples leave +-0.01 kWh
-        # (tests/bench/position_sweep.py; mdo.wake.mean.strip_averaged_influence)
-        if int(wake_samples) < 1:
-            raise InputError("wake_samples", f"must be >= 1, got {wake_samples}")
+        # control point; see the class docstring and tests/bench/position_sweep.py)
         self.wake_samples = int(wake_samples)
-        # tip Mach and disk clearance; off for the analysis of a design that violates them (GA-8P)
+        # design-point tip Mach and disk clearance; off for the analysis of a design that violates them (GA-8P)
         self.design_point_constraints = bool(design_point_constraints)
         self.misc_drag_fraction = float(misc_drag_fraction)
         self.bounds = bounds or DesignBounds()
-        # drag_device_area_m2: the most flat-plate area (gear, flap) the pilot may add at a
-        # node (segment parameter; 0 = none); its deployment is a control of those nodes
-        self.parameters = {"wing_mounted_angle_rad": 0.0, "pitch_command_rad": 0.0, "drag_device_area_m2": 0.0}
-        self.group = config.rotor_groups[0]
-        self.section = section(self.group.airfoil.lower().replace("_", ""))
-        self.powertrain = paper_powertrain(config.name, rated_rpm=self.group.design_rpm)
-        self.omega_design = self.group.design_rpm * u.RPM
-        self.bemt = bemt_function(self.section, self.n_stations, self.n_azimuth, outputs="nlp")
+        self.groups = [RotorGroupModel(g, config.kind, any(config.wing(w).tilting for w in g.wings),
+                                       n_stations=self.n_stations, n_azimuth=self.n_azimuth)
+                       for g in config.rotor_groups]
+        self.parameters = {"wing_mounted_angle_rad": 0.0, "pitch_command_rad": 0.0, "drag_device_area_m2": 0.0,
+                           "stall_margin_cl": self.stall_margin_cl, "flap_deflection": 0.0}
+        self.parameters.update({f"{g.name}.active": 1.0 for g in self.groups})
+        self.pack = config.battery.pack()
         self._problem = None
         self.togw_baseline_kg = solve_togw(config)
-        # rotor positions free unless the config says they are fixed (GA-8P: equally spaced)
         self.positions_free = ("positions" in self.free) if positions_free is None else bool(positions_free)
-        self._baseline_blade = None
 
-    # ------------------------------------------------------------------ design
+    @staticmethod
+    def _check_options(config, free, coupling, mass_model, tip_mach_limit, swirl_recovery, wake_samples,
+                       stall_margin_cl, max_span_m):
+        if not isinstance(config, VehicleConfig):
+            raise InputError("config", f"a VehicleConfig, got {type(config).__name__}")
+        choices = {"coupling": (coupling, ("swirl", "freestream", "local")),
+                   "mass_model": (mass_model, ("buildup", "fixed")),
+                   "tip_mach_limit": (tip_mach_limit, ("nodes", "design_point", "off")),
+                   "swirl_recovery": (swirl_recovery, ("bounded", "unbounded"))}
+        for field_name, (value, allowed) in choices.items():
+            if value not in allowed:
+                raise InputError(field_name, f"one of {', '.join(map(repr, allowed))}, got {value!r}")
+        unknown_free = set(free) - {"rotor", "wing", "positions"}
+        if unknown_free:
+            raise InputError("free", f"unknown design groups {sorted(unknown_free)}; allowed rotor, wing, positions")
+        if int(wake_samples) != wake_samples or int(wake_samples) < 1:
+            raise InputError("wake_samples", f"an integer >= 1, got {wake_samples!r}")
+        if not (-1.0 <= float(stall_margin_cl) <= 1.0):
+            raise InputError("stall_margin_cl", f"in [-1, 1], got {stall_margin_cl!r}")
+        if max_span_m is not None and not (0.5 <= float(max_span_m) <= 100.0):
+            raise InputError("max_span_m", f"in [0.5, 100] m, got {max_span_m!r}")
+
+    # ------------------------------------------------------------------ compatibility views
+    @property
+    def group(self):
+        """The first rotor group's definition (single-group vehicles)."""
+        return self.config.rotor_groups[0]
+
     @property
     def lifting_wings(self) -> list[WingConfig]:
-        """Wings whose span/taper/twist are design variables (main and tandem wings)."""
-        return [w for w in self.config.wings if not w.vertical and (w.name == "main_wing" or w.tilting
-                                                                    or w.name.startswith("tandem"))]
+        return self.config.lifting_wings
 
     @property
     def tails(self) -> list[WingConfig]:
-        return [w for w in self.config.wings if not w.vertical and w not in self.lifting_wings]
+        return self.config.horizontal_tails
+
+    @property
+    def omega_design(self) -> float:
+        return self.groups[0].omega_design
+
+    @property
+    def section(self):
+        return self.groups[0].section
 
     def baseline_blade(self) -> dict:
-        """The numeric Adkins-Liebeck blade at the configured design point."""
-        if self._baseline_blade is None:
-            g = self.group
-            self._baseline_blade = adkins_liebeck(
-                blades=g.blades, radius_m=g.radius_m, speed_mps=g.design_speed_mps, airfoil=self.section,
-                cl_design=g.design_cl, thrust_N=g.design_thrust_N, omega_radps=self.omega_design,
-                hub_fraction=g.hub_fraction, altitude_m=g.design_altitude_m, n_stations=self.n_stations)
-        return self._baseline_blade
+        return self.groups[0].baseline_blade()
 
+    def transition_nodes(self, wma) -> np.ndarray:
+        return self.groups[0].transition_nodes(wma)
+
+    # ------------------------------------------------------------------ design
     def setup(self, problem) -> None:
         if self._problem is problem:
             return
         self._problem = problem
-        cfg, g, b = self.config, self.group, self.bounds
-        var = problem.variable
-        d = {}
-        # --- rotor design (Eq. 7: c, beta = f(V_design, R_tip, T_design, cl_design))
-        rotor_free = "rotor" in self.free
+        b = self.bounds
+        dtp = self.design_point_constraints and self.tip_mach_limit != "off"
+        for gm in self.groups:
+            gm.add_design(problem, b, rotor_free="rotor" in self.free, positions_free=self.positions_free,
+                          design_point_constraint=dtp)
+        self.design = {"wings": self._wing_design(problem)}
+        first = self.groups[0].design
+        self.design.update({k: first[k] for k in ("T_design", "V_design", "R", "cl_design", "eta", "P_rated")})
+        self.blade = self.groups[0].blade
+        self.tip_mach_design = self.groups[0].tip_mach_design
+        self._build_geometry(problem)
+        if self.design_point_constraints:
+            self._no_overlap(problem)
+        self.bus = Bus(self.pack, [gm.motor_group(self.pack) for gm in self.groups],
+                       aux_power_W=self.config.aux_power_W)
+        self.powertrain = self.bus
+        self._add_mass(problem)
 
-        def dv(name, init, lo, hi, unit, scale, desc, free=True, shape=1):
-            if not free:
-                lo, hi = init, init
-            return var(name, shape, unit=unit, scale=scale, lower=lo, upper=hi, init=init, design=True,
-                       description=desc)
-
-        p = g.name
-        d["T_design"] = dv(f"{p}.design_thrust", g.design_thrust_N, b.design_thrust[0] * g.design_thrust_N,
-                           b.design_thrust[1] * g.design_thrust_N, "N", g.design_thrust_N,
-                           "Adkins-Liebeck design thrust", rotor_free)
-        d["V_design"] = dv(f"{p}.design_speed", g.design_speed_mps, b.design_speed[0] * g.design_speed_mps,
-                           b.design_speed[1] * g.design_speed_mps, "m/s", max(g.design_speed_mps, 5.0),
-                           "Adkins-Liebeck design speed", rotor_free)
-        d["R"] = dv(f"{p}.tip_radius", g.radius_m, b.tip_radius[0] * g.radius_m, b.tip_radius[1] * g.radius_m,
-                    "m", g.radius_m, "propeller/rotor tip radius", rotor_free)
-        d["cl_design"] = dv(f"{p}.design_cl", g.design_cl, b.design_cl[0], b.design_cl[1], "-", 1.0,
-                            "Adkins-Liebeck design lift coefficient", rotor_free)
-        # --- wings: span, taper, section twists at constant area (Fig. 12)
-        wing_free = "wing" in self.free
-        d["wings"] = {}
+    def _wing_design(self, problem) -> dict:
+        """Span, taper, section twists at constant area (Fig. 12) per lifting wing."""
+        b, free = self.bounds, "wing" in self.free
+        out = {}
         for w in self.lifting_wings:
-            span = dv(f"{w.name}.span", w.span_m, b.span[0] * w.span_m, b.span[1] * w.span_m, "m", w.span_m,
-                      f"{w.name} span (area held at {w.area_m2} m^2)", wing_free)
-            taper = dv(f"{w.name}.taper", w.taper, b.taper[0], b.taper[1], "-", 1.0, f"{w.name} taper ratio",
-                       wing_free)
+            hi = b.span[1] * w.span_m if self.max_span_m is None else min(b.span[1] * w.span_m, self.max_span_m)
+            if hi < w.span_m:
+                raise InputError("max_span_m", f"{self.max_span_m} m is below {w.name}'s baseline span {w.span_m} m")
+
+            def dv(name, init, lo, up, unit, scale, desc, shape=1):
+                lo, up = (lo, up) if free else (init, init)
+                return problem.variable(name, shape, unit=unit, scale=scale, lower=lo, upper=up, init=init,
+                                        design=True, description=desc)
             tw0 = np.radians(np.asarray(w.twist_deg, float))
-            twist = dv(f"{w.name}.twist", tw0, np.radians(b.twist_deg[0]), np.radians(b.twist_deg[1]), "rad",
-                       0.05, f"{w.name} section twists at eta {list(w.section_eta)}", wing_free,
-                       shape=len(tw0))
-            d["wings"][w.name] = {"span": span, "taper": taper, "twist": twist}
-        # --- rotor span positions (fraction of the semispan of their wing)
-        eta0 = np.asarray(g.span_eta, float)
-        d["eta"] = dv(f"{p}.span_eta", eta0, b.span_eta[0], b.span_eta[1], "-", 1.0,
-                      "rotor span positions, fraction of the semispan", self.positions_free, shape=len(eta0))
-        self.design = d
+            out[w.name] = {
+                "span": dv(f"{w.name}.span", w.span_m, b.span[0] * w.span_m, hi, "m", w.span_m,
+                           f"{w.name} span (area held at {w.area_m2} m^2)"),
+                "taper": dv(f"{w.name}.taper", w.taper, b.taper[0], b.taper[1], "-", 1.0, f"{w.name} taper ratio"),
+                "twist": dv(f"{w.name}.twist", tw0, np.radians(b.twist_deg[0]), np.radians(b.twist_deg[1]), "rad",
+                            0.05, f"{w.name} section twists at eta {list(w.section_eta)}", shape=len(tw0))}
+        return out
 
-        # --- blade: Adkins-Liebeck as residuals, design-level unknowns
-        atm_d = atmosphere(g.design_altitude_m)
-        blade0 = self.baseline_blade()
-        al_inputs = {"target": d["T_design"], "speed_mps": d["V_design"], "radius_m": d["R"],
-                     "omega_radps": self.omega_design, "cl_design": d["cl_design"],
-                     "rho_kgpm3": float(atm_d["density_kgpm3"]), "mu_Pas": float(atm_d["dynamic_viscosity_Pas"]),
-                     "a_mps": float(atm_d["speed_of_sound_mps"]), "hub_fraction": g.hub_fraction,
-                     "blades": g.blades}
-        self.blade = add_adkins_liebeck(problem, f"{p}.blade", self.section, al_inputs,
-                                        n_stations=self.n_stations, init=blade0)
-        # tip Mach at the design point (Eq. 7: M_tip <= M_max), design rpm fixed per vehicle
-        a_d = float(atm_d["speed_of_sound_mps"])
-        tip2 = (self.omega_design * d["R"]) ** 2 + d["V_design"] ** 2
-        if self.design_point_constraints:
-            problem.constrain(f"{p} tip Mach", tip2 / (g.tip_mach_max * a_d) ** 2, kind="<=", rhs=1.0,
-                              scale=1.0, unit="-", labels=[f"{p} design point"])
-        self.tip_mach_design = ca.sqrt(tip2) / a_d
-        problem.output(f"{p}.tip_mach_design", self.tip_mach_design, unit="-", summary=True)
-
-        # --- geometry: wings, rotor placements, lattice, wakes
-        self._build_geometry(problem, d)
-        if self.design_point_constraints:
-            self._no_overlap(problem, d)
-        # --- gross weight
+    def _add_mass(self, problem):
+        d = self.design
         md = MassDesign({w: v["span"] for w, v in d["wings"].items()},
-                        {w: v["taper"] for w, v in d["wings"].items()}, {p: d["R"]})
+                        {w: v["taper"] for w, v in d["wings"].items()},
+                        {gm.name: gm.design["R"] for gm in self.groups},
+                        {gm.name: gm.design["P_rated"] for gm in self.groups},
+                        {gm.name: gm.design["omega_rated"] for gm in self.groups})
         self.mass_design = md
         if self.mass_model == "buildup":
-            togw = var("togw", 1, unit="kg", scale=self.togw_baseline_kg, lower=0.3 * self.togw_baseline_kg,
-                       upper=3.0 * self.togw_baseline_kg, init=self.togw_baseline_kg,
-                       description="take-off gross weight (mass build-up)")
-            problem.constrain("mass build-up", togw - total_mass(cfg, togw, md), scale=self.togw_baseline_kg,
-                              unit="kg", labels=["TOGW"])
+            W0 = self.togw_baseline_kg
+            togw = problem.variable("togw", 1, unit="kg", scale=W0, lower=0.3 * W0, upper=3.0 * W0, init=W0,
+                                    description="take-off gross weight (mass build-up)")
+            problem.constrain("mass build-up", togw - total_mass(self.config, togw, md), scale=W0, unit="kg",
+                              labels=["TOGW"])
             self.togw = togw
         else:
             self.togw = self.togw_baseline_kg
         problem.output("togw_kg", self.togw, unit="kg", summary=True)
+        problem.output("battery_mass_kg", self.config.battery.mass_kg, unit="kg", summary=True)
 
-    def _wing_surfaces(self, d, numeric: bool):
-        """VLM surfaces from the design dict ``d`` (MX) or from the baseline (numeric)."""
-        g = self.group
-        surfaces, rotor_pos = [], []
-        eta_r = d["eta"]
-        R = d["R"]
+    # ------------------------------------------------------------------ geometry
+    def wing_surfaces(self, d: dict) -> tuple:
+        """VLM surfaces and rotor centres per group from a design dict ``d`` (numbers
+        or MX): ``d["wings"][name] = {"span", "taper", "twist"}`` and, per group,
+        ``d["groups"][name] = {"R", "eta"}``.  Returns (surfaces, {group: [centres]})."""
+        surfaces, rotor_pos = [], {gm.name: [] for gm in self.groups}
         for w in self.lifting_wings:
             dw = d["wings"][w.name]
             span, taper, twist = dw["span"], dw["taper"], dw["twist"]
             semispan = span / 2
-            breaks, nominal = [], []
-            if w.name in g.wings and self.slipstream_breaks:
-                for i in range(len(g.span_eta)):
-                    e = eta_r[i]
-                    lo = (e * semispan - R) / semispan
-                    hi = (e * semispan + R) / semispan
-                    e0 = float(g.span_eta[i])
-                    lo0 = e0 - g.radius_m / (w.span_m / 2)
-                    hi0 = e0 + g.radius_m / (w.span_m / 2)
-                    # keep the moving slipstream edges inside the wing (smooth, width 0.01 semispan)
-                    if lo0 > 0.02:
-                        breaks.append(smooth_max(lo, 0.02, 0.01))
-                        nominal.append(lo0)
-                    if hi0 < 0.98:
-                        breaks.append(smooth_min(hi, 0.98, 0.01))
-                        nominal.append(hi0)
+            breaks, nominal = self._slipstream_breaks(w, d, semispan) if self.slipstream_breaks else ([], [])
             twists = [twist[k] for k in range(len(w.twist_deg))]
             surf = constant_area(w.name, w.area_m2, span, taper, twists, eta=list(w.section_eta),
-                                 airfoil=w.airfoil.lower().replace("_", ""), nspan=self.wing_strips,
+                                 airfoil=section_name(w.airfoil), nspan=self.wing_strips,
                                  nchord=self.nchord, anchor_sections=False, breaks=breaks,
                                  break_nominal=nominal if nominal else None,
                                  origin=(w.root_le_x_m, 0.0, w.root_z_m), incidence=math.radians(w.incidence_deg),
                                  thickness_to_chord=w.thickness_to_chord)
             surfaces.append(surf)
-            if w.name in g.wings:
-                c_r = surf.root_chord
+            c_r = surf.root_chord
+            for gm in self.groups:
+                g = gm.config
+                if w.name not in g.wings:
+                    continue
                 for i in range(len(g.span_eta)):
-                    e = eta_r[i]
+                    e = d["groups"][g.name]["eta"][i]
                     # unswept quarter chord: the leading edge moves aft by (c_r - c(y))/4
                     x_le = w.root_le_x_m + 0.25 * c_r * (1 - taper) * e
-                    y = e * semispan
-                    rotor_pos.append((x_le - g.x_ahead_of_le_m, y, w.root_z_m - g.z_below_wing_m))
+                    rotor_pos[g.name].append((x_le - g.x_ahead_of_le_m, e * semispan, w.root_z_m - g.z_below_wing_m))
         for t in self.tails:
-            surfaces.append(trapezoid(t.name, t.span_m, t.root_chord_m, t.taper,
-                                      airfoil=t.airfoil.lower().replace("_", ""), nspan=self.tail_strips,
-                                      nchord=self.nchord, origin=(t.root_le_x_m, 0.0, t.root_z_m),
-                                      incidence=math.radians(t.incidence_deg),
-                                      thickness_to_chord=t.thickness_to_chord))
+            surfaces.append(trapezoid(t.name, t.span_m, t.root_chord_m, t.taper, airfoil=section_name(t.airfoil),
+                                      nspan=self.tail_strips, nchord=self.nchord, origin=(t.root_le_x_m, 0.0, t.root_z_m),
+                                      incidence=math.radians(t.incidence_deg), thickness_to_chord=t.thickness_to_chord))
         return surfaces, rotor_pos
 
-    def _rotors(self, rotor_pos, R):
-        g = self.group
-        edges = WakeRotor.from_geometry(self.baseline_blade()["geometry"], (0.0, 0.0, 0.0),
+    def _slipstream_breaks(self, w, d, semispan):
+        """Strip boundaries at the slipstream edges (option ``slipstream_breaks``)."""
+        breaks, nominal = [], []
+        for gm in self.groups:
+            g = gm.config
+            if w.name not in g.wings:
+                continue
+            R = d["groups"][g.name]["R"]
+            for i in range(len(g.span_eta)):
+                e = d["groups"][g.name]["eta"][i]
+                e0 = float(g.span_eta[i])
+                lo0, hi0 = e0 - g.radius_m / (w.span_m / 2), e0 + g.radius_m / (w.span_m / 2)
+                if lo0 > 0.02:   # keep the moving edges inside the wing (smooth, width 0.01 semispan)
+                    breaks.append(smooth_max((e * semispan - R) / semispan, 0.02, 0.01))
+                    nominal.append(lo0)
+                if hi0 < 0.98:
+                    breaks.append(smooth_min((e * semispan + R) / semispan, 0.98, 0.01))
+                    nominal.append(hi0)
+        return breaks, nominal
+
+    def numeric_design(self) -> dict:
+        """The baseline design as numbers, in the form :meth:`wing_surfaces` takes."""
+        d = {"wings": {w.name: {"span": w.span_m, "taper": w.taper,
+                                "twist": np.radians(np.asarray(w.twist_deg, float))} for w in self.lifting_wings},
+             "groups": {gm.name: {"R": gm.config.radius_m, "eta": np.asarray(gm.config.span_eta, float)}
+                        for gm in self.groups}}
+        return d
+
+    def _symbolic_design(self) -> dict:
+        return {"wings": self.design["wings"],
+                "groups": {gm.name: {"R": gm.design["R"], "eta": gm.design["eta"]} for gm in self.groups}}
+
+    def _rotors(self, gm, centres, R):
+        g = gm.config
+        edges = WakeRotor.from_geometry(gm.baseline_blade()["geometry"], (0.0, 0.0, 0.0),
                                         n_stations=self.n_stations).s_edges
         rotors = []
-        for (x, y, z) in rotor_pos:
+        for (x, y, z) in centres:
             for s in (1.0, -1.0):   # starboard, port
                 ys = s * y
                 center = ca.vertcat(x, ys, z) if any(isinstance(c, ca.MX) for c in (x, ys, z)) else (x, ys, z)
                 rotors.append(WakeRotor(center, (1.0, 0.0, 0.0), R, edges, g.blades, spin_for(s, g.rotation)))
         return rotors
 
-    def _build_geometry(self, problem, d):
+    def _build_geometry(self, problem):
         cfg = self.config
-        S_ref = sum(w.area_m2 for w in self.lifting_wings)
         main = cfg.main_wing
+        S_ref = sum(w.area_m2 for w in self.lifting_wings)
         lift_velocity = "freestream" if self.coupling == "freestream" else "local"
-        surfaces, rotor_pos = self._wing_surfaces(d, numeric=False)
+        surfaces, rotor_pos = self.wing_surfaces(self._symbolic_design())
         self.vlm = VLM(surfaces, S_ref=S_ref, c_ref=main.mean_aerodynamic_chord_m, b_ref=main.span_m,
                        r_ref=(main.root_le_x_m + 0.25 * main.mean_aerodynamic_chord_m, 0.0, main.root_z_m),
                        mach_ref=0.2, lift_velocity=lift_velocity)
-        self.rotors = self._rotors(rotor_pos, d["R"])
-        self.rotor_positions = rotor_pos
+        self.group_rotors = {gm.name: self._rotors(gm, rotor_pos[gm.name], gm.design["R"]) for gm in self.groups}
+        self.rotors = [r for gm in self.groups for r in self.group_rotors[gm.name]]
+        self.rotor_positions = [p for gm in self.groups for p in rotor_pos[gm.name]]
         self.influences = wake_influences(self.vlm.geometry["cp"], self.rotors, spans=self.vlm.geometry["lb"],
                                           samples=self.wake_samples)
         self.S_ref = S_ref
-        # non-lifting bodies (Raymer build-up) and the fin
-        f = cfg.fuselage
-        d_eff = math.sqrt(f.width_m * f.height_m)
-        self.bodies = [Body("fuselage", f.length_m, d_eff, "fuselage", 1.0, wetted_area=f.wetted_area_m2)]
-        nac_area = cfg.mass_inputs.get("nacelle_wetted_area_m2", 0.0)
-        if nac_area:
-            # nacelle as a body of fineness 3 with the configured wetted area: pi d l = A, l = 3 d
-            dn = math.sqrt(nac_area / (3 * math.pi))
-            self.bodies.append(Body("nacelle", 3 * dn, dn, "nacelle", 1.3, count=self.group.count,
-                                    wetted_area=nac_area))
-        self.fins = [w for w in cfg.wings if w.vertical]
-        problem.output("wing_aspect_ratio", d["wings"][main.name]["span"] ** 2 / main.area_m2, unit="-",
+        self.strip_eta = self._strip_eta()
+        # strips of the lifting wings inside the fuselage (baseline semispan) carry no stall limit
+        half_width = 0.5 * cfg.fuselage.width_m
+        semis = {w.name: w.span_m / 2 for w in self.lifting_wings}
+        names = [s_.name for s_ in self.vlm.surfaces]
+        self.strip_exposed = np.array([self.strip_eta[i] * semis.get(names[si], 0.0) > half_width
+                                       for i, si in enumerate(self.vlm.strip_surface)])
+        self.bodies = self.body_list()
+        self.fins = cfg.fins
+        problem.output("wing_aspect_ratio", self.design["wings"][main.name]["span"] ** 2 / main.area_m2, unit="-",
                        summary=True)
 
-    def _no_overlap(self, problem, d):
-        """Disks must not overlap each other or cross the symmetry plane (R <= R_max, Eq. 7)."""
-        g, cl = self.group, self.bounds.tip_clearance_m
-        for w in g.wings:
-            span = d["wings"][w]["span"]
-            y = [d["eta"][i] * span / 2 for i in range(len(g.span_eta))]
-            gaps = [y[0] - d["R"] - 0.5 * cl]
-            gaps += [y[i + 1] - y[i] - 2 * d["R"] - cl for i in range(len(y) - 1)]
-            problem.constrain(f"{g.name} disk clearance ({w})", ca.vertcat(*gaps), kind=">=", scale=0.1,
-                              unit="m", labels=[f"{w} inner disk to symmetry plane"]
-                              + [f"{w} disks {i}-{i + 1}" for i in range(len(y) - 1)])
+    def _strip_eta(self) -> np.ndarray:
+        """Each strip's position as a fraction of its surface's semispan (fixed by the layout)."""
+        surfaces, _ = self.wing_surfaces(self.numeric_design())
+        vlm = VLM(surfaces, S_ref=self.S_ref, mach_ref=0.2)
+        y = np.abs(np.asarray(ca.DM(vlm.geometry["strip_y"]), float).ravel())
+        half = {}
+        for i, si in enumerate(vlm.strip_surface):
+            half[si] = max(half.get(si, 0.0), y[i] + 0.5 * float(np.asarray(ca.DM(vlm.geometry["strip_width"])).ravel()[i]))
+        return np.array([y[i] / half[si] for i, si in enumerate(vlm.strip_surface)])
+
+    def body_list(self) -> list:
+        """Non-lifting bodies of the drag build-up (Raymer): the fuselage and each group's nacelles."""
+        f = self.config.fuselage
+        bodies = [Body("fuselage", f.length_m, math.sqrt(f.width_m * f.height_m), "fuselage", 1.0,
+                       wetted_area=f.wetted_area_m2)]
+        for gm in self.groups:
+            a = gm.config.nacelle_wetted_area_m2
+            if a:
+                # a body of fineness 3 with the configured wetted area: pi d l = A, l = 3 d
+                dn = math.sqrt(a / (3 * math.pi))
+                bodies.append(Body(f"nacelle {gm.name}", 3 * dn, dn, "nacelle", 1.3, count=gm.config.count,
+                                   wetted_area=a))
+        return bodies
+
+    def _no_overlap(self, problem):
+        """Disks must not overlap each other (any groups) or cross the symmetry plane (Eq. 7's R_max)."""
+        cl = self.bounds.tip_clearance_m
+        for w in self.lifting_wings:
+            span = self.design["wings"][w.name]["span"]
+            disks = []
+            for gm in self.groups:
+                g = gm.config
+                if w.name in g.wings:
+                    disks += [(float(g.span_eta[i]), gm.design["eta"][i] * span / 2, gm.design["R"], f"{g.name}[{i}]",
+                               g.name, g.x_ahead_of_le_m) for i in range(len(g.span_eta))]
+            if not disks:
+                continue
+            disks.sort(key=lambda t: t[0])
+            gaps = [disks[0][1] - disks[0][2] - 0.5 * cl]
+            labels = [f"{w.name} inner disk to symmetry plane"]
+            for a, b in zip(disks[:-1], disks[1:]):
+                if not disks_in_one_plane(a[4], a[5], b[4], b[5]):
+                    continue
+                gaps.append(b[1] - a[1] - a[2] - b[2] - cl)
+                labels.append(f"{w.name} disks {a[3]}-{b[3]}")
+            problem.constrain(f"disk clearance ({w.name})", ca.vertcat(*gaps), kind=">=", scale=0.1, unit="m",
+                              labels=labels)
 
     # ------------------------------------------------------------------ protocol
     def unknowns(self):
-        g, n, m = self.group, self.n_stations, self.n_azimuth
-        pt = self.powertrain
-        spec = pt.battery_current_unknown()
-        return [
-            Unknown(f"{g.name}.omega", unit="rad/s", scale=self.omega_design, lower=0.05 * self.omega_design,
-                    upper=3.0 * self.omega_design, description="rotor speed (all rotors, equally throttled)"),
-            Unknown(f"{g.name}.phi", unit="rad", scale=0.3, lower=PHI_MIN_RAD, upper=PHI_MAX_RAD, rows=n * m,
-                    description="BEMT inflow angles (station fastest, then azimuth)"),
-            Unknown(spec["name"], unit=spec["unit"], scale=spec["scale"], lower=spec["lower"], upper=spec["upper"],
-                    description=spec["description"]),
-        ]
+        from .base import Unknown
+        spec = self.bus.battery_current_unknown()
+        out = [u_ for gm in self.groups for u_ in gm.unknowns()]
+        out.append(Unknown(spec["name"], unit=spec["unit"], scale=spec["scale"], lower=spec["lower"],
+                           upper=spec["upper"], description=spec["description"]))
+        return out
 
     def states(self):
-        return [State(**self.powertrain.soc_state())]
+        return [State("state_of_charge", unit="-", scale=1.0, initial=1.0, lower=0.0, upper=1.0,
+                      description="battery state of charge s = 1 - q/Q_u(T); ds/dt = soc_rate_per_s")]
 
     def energy_used_J(self, initial, final):
-        return self.powertrain.energy_used_J(initial["state_of_charge"], final["state_of_charge"])
+        return self.pack.energy_used_J(initial["state_of_charge"], final["state_of_charge"])
 
-    def rotor_axis_angle(self, wma):
-        """Angle of the thrust axis above the body x axis: the wing-mounted angle (TTW) or 0."""
-        tilting = any(self.config.wing(w).tilting for w in self.group.wings)
-        return wma if tilting else 0.0 * wma
+    def final_limits(self, final_states):
+        """State of charge left after the whole mission (reserves included) >= BatteryConfig.reserve_soc."""
+        if not self.limits_on:
+            return []
+        r = self.config.battery.reserve_soc
+        return [ResidualGroup("state of charge reserve", final_states["state_of_charge"] - r, kind=">=",
+                              scale=0.1, unit="-", row_labels=[f"end of mission (reserve {r:g})"])]
+
+    def rotor_axis_angle(self, gm, wma):
+        """Angle of a group's thrust axis above the body x axis: the wing-mounted angle if its wing tilts."""
+        return wma if gm.tilting else 0.0 * wma
 
     def evaluate(self, nodes, unknowns) -> NodeEvaluation:
         if self._problem is None:
             raise RuntimeError("Aircraft.evaluate before setup(problem)")
-        d, g = self.design, self.group
         K = nodes.size
-        h = _num(nodes.altitude_m).ravel()
-        atm = atmosphere(h)
+        atm = atmosphere(_num(nodes.altitude_m).ravel())
         rho, mu, a_s = (_row(atm[k]) for k in ("density_kgpm3", "dynamic_viscosity_Pas", "speed_of_sound_mps"))
-        V = nodes.speed_mps
-        gam = nodes.flight_path_angle_rad
-        theta = nodes.body_angle_rad
+        V, gam, theta = nodes.speed_mps, nodes.flight_path_angle_rad, nodes.body_angle_rad
         alpha = theta - gam
         wma = nodes.parameters.get("wing_mounted_angle_rad", _row(0.0, K))
         pitch = nodes.parameters.get("pitch_command_rad", _row(0.0, K))
-        a_rot = alpha + self.rotor_axis_angle(wma)
-        v_ax = V * ca.cos(a_rot)
-        v_ip = V * ca.sin(a_rot)
-        omega = unknowns[f"{g.name}.omega"]
-        phi = unknowns[f"{g.name}.phi"]
+        env = dict(K=K, rho=rho, mu=mu, a_s=a_s, V=V, alpha=alpha, wma=wma, pitch=pitch)
+        rot = {gm.name: self._rotor_nodes(gm, nodes, unknowns, env) for gm in self.groups}
+        aero = self._aerodynamics(nodes, rot, env)
+        F_t, F_n = -aero["D"], aero["L"]
+        for gm in self.groups:
+            o = rot[gm.name]
+            n = gm.config.count
+            F_t = F_t + n * (o["T"] * o["cos"] - o["H"] * o["sin"])
+            F_n = F_n + n * (o["T"] * o["sin"] + o["H"] * o["cos"])
+        soc = nodes.states["state_of_charge"]
         ib = unknowns["battery_current_A"]
-        # --- rotors (one BEMT, all rotors of the group alike)
-        bm, extra_res = self._bemt_nodes(K, _num(wma).ravel(), d, pitch, omega, v_ax, v_ip, rho, mu, a_s, phi)
-        n_rot = g.count
-        T1, Q1, H1 = bm["thrust_N"], bm["torque_Nm"], bm["hforce_N"]
-        # --- wake at the wing and the lattice
-        v_w = v_ax + bm["va_mean_mps"]
-        gam_r = [bm["gamma_m2ps"]] * len(self.rotors)
-        om_r = [omega] * len(self.rotors)
-        vw_r = [v_w] * len(self.rotors)
+        po = self.bus.evaluate([rot[gm.name]["Q"] for gm in self.groups],
+                               [rot[gm.name]["omega"] for gm in self.groups], soc, ib)
+        residuals = [r_ for gm in self.groups for r_ in rot[gm.name]["residuals"]]
+        residuals.append(ResidualGroup("power balance", po["power_balance_W"], scale=self.bus.power_scale_W,
+                                       unit="W"))
+        if self.limits_on:
+            residuals += self._limits(nodes, rot, po, aero, env)
+        out = self._outputs(nodes, rot, aero, po, env)
+        self._last = {"vlm": aero["vlm"], "bemt": rot[self.groups[0].name]["bemt"], "powertrain": po,
+                      "rotors": rot}
+        return NodeEvaluation(mass_kg=self.togw, force_along_path_N=F_t, force_normal_N=F_n, residuals=residuals,
+                              force_scale_N=self.togw_baseline_kg * G0,
+                              state_derivatives={"state_of_charge": po["soc_rate_per_s"]}, outputs=out)
+
+    def _rotor_nodes(self, gm, nodes, unknowns, env) -> dict:
+        """One group's BEMT at every node, masked where the segment stops it."""
+        K, V, alpha, wma = env["K"], env["V"], env["alpha"], env["wma"]
+        g = gm.config
+        a_rot = alpha + self.rotor_axis_angle(gm, wma)
+        v_ax, v_ip = V * ca.cos(a_rot), V * ca.sin(a_rot)
+        omega, phi = unknowns[f"{g.name}.omega"], unknowns[f"{g.name}.phi"]
+        bm, residuals = gm.bemt_nodes(K, _num(wma).ravel(), env["pitch"], omega, v_ax, v_ip, env["rho"],
+                                      env["mu"], env["a_s"], phi)
+        act = _num(nodes.parameters.get(f"{g.name}.active", _row(1.0, K))).ravel() * np.ones(K)
+        on = np.flatnonzero(act > 0.5)
+        off = np.flatnonzero(act <= 0.5)
+        if off.size:   # stopped: hold the speed so the unused BEMT unknowns stay determined
+            residuals = residuals + [ResidualGroup(f"{g.name} stopped", omega[:, list(off)] - gm.omega_design,
+                                                   scale=gm.omega_design, unit="rad/s", columns=off)]
+        a = _row(act)
+        return {"T": a * bm["thrust_N"], "Q": a * bm["torque_Nm"], "H": a * bm["hforce_N"], "omega": omega,
+                "gamma": ca.repmat(a, self.n_stations, 1) * bm["gamma_m2ps"], "v_wake": v_ax + bm["va_mean_mps"],
+                "v_ax": v_ax, "cos": ca.cos(a_rot), "sin": ca.sin(a_rot), "bemt": bm, "residuals": residuals,
+                "active": act, "on": on, "off": off,
+                "swirl_W": a * gm.swirl_power_W(bm, v_ax, env["rho"]) * g.count}
+
+    def _aerodynamics(self, nodes, rot, env) -> dict:
+        """Wake at the wing, the lattice, the bounded swirl credit and the drag build-up."""
+        K, V, rho, mu, a_s, alpha, wma = (env[k] for k in ("K", "V", "rho", "mu", "a_s", "alpha", "wma"))
+        gam_r, om_r, vw_r = [], [], []
+        for gm in self.groups:
+            o = rot[gm.name]
+            n_r = len(self.group_rotors[gm.name])
+            gam_r += [o["gamma"]] * n_r
+            om_r += [o["omega"]] * n_r
+            vw_r += [o["v_wake"]] * n_r
         # the whole wake in the flow tangency; without its axial part in the forces ("swirl")
         v_axial, v_rest = influence_sum_parts(self.influences, gam_r, om_r, vw_r)
-        v_cp = tuple(a + r for a, r in zip(v_axial, v_rest))
+        v_cp = tuple(x + y for x, y in zip(v_axial, v_rest))
+        v_cp = self._flap_upwash(nodes, v_cp, V)
         v_b = v_rest if self.coupling == "swirl" else None
         mach = V / a_s
         wing_alpha = alpha + wma if self.config.kind == "tilt_wing" else alpha
         r = self.vlm.solve(wing_alpha, V, rho=rho, mach=mach, v_ext=v_cp, v_ext_bound=v_b)
-        # --- drag build-up
+        q = 0.5 * rho * V * V
+        # swirl: the near-field force along the path is the power recovered from the slipstreams
+        recovered = -r["CDi_near"] * q * self.S_ref * V
+        available = sum(rot[gm.name]["swirl_W"] for gm in self.groups)
+        if self.coupling == "swirl" and self.swirl_recovery == "bounded":
+            credit = smooth_min(recovered, available, 0.02 * available + 10.0)
+            D_i = r["D_i"] + (recovered - credit) / ca.sqrt(V * V + 1.0)
+        else:
+            credit, D_i = recovered, r["D_i"]
         pd = profile_drag(self.vlm, r, rho, mu, mach)
-        L_stall, D_stall = self.stall_correction(self.vlm, r, pd, rho, V) if self.wing_stall else (0.0, 0.0)
+        L_stall, D_stall = stall_correction(self.vlm, r, pd, rho, V) if self.wing_stall else (0.0, 0.0)
         D_bodies, _ = body_drag(self.bodies, V, rho, mu, mach)
         D_fin = 0.0
-        q = 0.5 * rho * V * V
         for f in self.fins:
             re = rho * V * f.mean_aerodynamic_chord_m / mu
             cf = skin_friction(ca.sqrt(re * re + 1e8), mach)
             ff = form_factor_wing(f.thickness_to_chord, mach=ca.sqrt(mach * mach + 1e-4),
                                   sweep_max_thickness=math.radians(f.sweep_quarter_chord_deg))
             D_fin = D_fin + q * cf * ff * 2.04 * f.area_m2
+        D_folded = 0.0
+        for gm in self.groups:
+            A = gm.config.folded_drag_area_m2
+            if A and rot[gm.name]["off"].size:
+                D_folded = D_folded + q * _row(1.0 - rot[gm.name]["active"]) * gm.config.count * A
         D_device, deploy = self._drag_device(nodes, q)
-        D_parasite = (pd["D_p"] + D_stall + D_bodies + D_fin) * (1.0 + self.misc_drag_fraction) + D_device
-        D = r["D_i"] + D_parasite
-        L = r["L"] + L_stall
-        # --- forces in the path frame (x along the velocity, z normal)
-        ca_r, sa_r = ca.cos(a_rot), ca.sin(a_rot)
-        F_t = -D + n_rot * (T1 * ca_r - H1 * sa_r)
-        F_n = L + n_rot * (T1 * sa_r + H1 * ca_r)
-        # --- powertrain
-        soc = nodes.states["state_of_charge"]
-        pt = self.powertrain
-        po = pt.evaluate(Q1, omega, soc, ib)
-        residuals = [ResidualGroup("power balance", po["power_balance_W"], scale=pt.power_scale_W, unit="W")]
-        if extra_res is None:
-            residuals.insert(0, ResidualGroup(
-                f"{g.name} BEMT", bm["residual"], scale=1.0, unit="-",
-                row_labels=[f"r{i} psi{j}" for j in range(self.n_azimuth) for i in range(self.n_stations)]))
-        else:   # azimuth-averaged and axial nodes have different row counts: added directly, own labels
-            for name, expr, cols, rows in extra_res:
-                labels = [f"{nodes.labels[k]} {r}" for k in cols for r in rows]
-                self._problem.constrain(f"{g.name} {name}", expr, scale=1.0, unit="-", labels=labels)
-        if self.powertrain_limits:
-            for lim in pt.limits(po):
-                residuals.append(ResidualGroup(lim["name"], lim["expr"] - lim["rhs"], scale=lim["scale"],
-                                               unit=lim["unit"], kind=lim["kind"]))
-        tip_mach = ca.sqrt((omega * d["R"]) ** 2 + V * V) / a_s
-        P_shaft = n_rot * Q1 * omega
+        D_parasite = (pd["D_p"] + D_stall + D_bodies + D_fin + D_folded) * (1.0 + self.misc_drag_fraction) + D_device
+        return {"vlm": r, "pd": pd, "D": D_i + D_parasite, "L": r["L"] + L_stall, "D_i": D_i,
+                "D_parasite": D_parasite, "D_device": D_device, "deploy": deploy, "q": q, "D_folded": D_folded,
+                "swirl_recovered_W": recovered, "swirl_available_W": available, "swirl_credit_W": credit}
+
+    def _flap_upwash(self, nodes, v_cp, V):
+        """Deflected flaps as an incidence increment of the flapped strips in the flow
+        tangency: ``d_alpha = delta dcl_max / (2 pi)`` - the section lift curve moves up
+        by about the flap's cl_max increment (Raymer 6th ed. Sec. 12.4, plain and
+        slotted flaps), an upwash ``V d_alpha`` at those control points; the forces keep
+        the freestream, so the flap adds circulation (lift, and its induced drag)."""
+        K = nodes.size
+        vz = self.flap_upwash(_num(nodes.parameters.get("flap_deflection", _row(0.0, K))).ravel() * np.ones(K), V)
+        return v_cp if vz is None else (v_cp[0], v_cp[1], v_cp[2] + vz)
+
+    def flap_upwash(self, flap, V, vlm=None):
+        """Upwash (N x K, m/s) of the deflected flaps at the control points of ``vlm``
+        (default the vehicle's lattice) for flap deflections ``flap`` (K numbers) and
+        speeds ``V`` (1 x K); None when no flap is deflected."""
+        vlm = vlm or self.vlm
+        dalpha = self._flap_strip_dalpha()
+        flap = np.asarray(flap, float).ravel()
+        if not np.any(flap) or not np.any(dalpha):
+            return None
+        panel = ca.mtimes(ca.DM(vlm.strip_sum).T, ca.DM(dalpha.reshape(-1, 1)))   # N x 1
+        return ca.mtimes(panel, V * _row(flap))
+
+    def _flap_strip_dalpha(self) -> np.ndarray:
+        """Incidence increment (rad) of each strip at full flap deflection (0 where no flap)."""
+        names = [s_.name for s_ in self.vlm.surfaces]
+        by = {w.name: w for w in self.lifting_wings}
+        out = np.zeros(len(self.vlm.strip_surface))
+        for i, si in enumerate(self.vlm.strip_surface):
+            w = by.get(names[si])
+            if w is not None and w.flap_clmax_increment > 0:
+                lo, hi = w.flap_span_eta
+                if lo <= self.strip_eta[i] <= hi:
+                    out[i] = w.flap_clmax_increment / (2 * math.pi)
+        return out
+
+    def _limits(self, nodes, rot, po, aero, env) -> list:
+        """Operating limits at every node (module docstring), named groups."""
+        K = env["K"]
+        tip_nodes = self.tip_mach_limit == "nodes" and self.design_point_constraints
+        out = []
+        for gm in self.groups:
+            o = rot[gm.name]
+            lims = gm.limits(nodes, o["omega"], o["Q"], po["groups"][gm.name], env["V"], env["a_s"],
+                             tip_mach_at_nodes=tip_nodes)
+            on = o["on"]
+            for lim in lims:
+                if on.size < K:
+                    lim.expr, lim.columns = lim.expr[:, list(on)], on
+                out.append(lim)
+        pk = self.pack
+        out.append(ResidualGroup("cell current", po["cell_current_A"] - pk.max_cell_current_A, kind="<=",
+                                 scale=pk.max_cell_current_A, unit="A", row_labels=["cell current - max"]))
+        out.append(ResidualGroup("cell voltage", po["cell_voltage_V"] - pk.min_cell_voltage_V, kind=">=",
+                                 scale=1.0, unit="V", row_labels=["cell voltage - cut-off"]))
+        if not self.allow_regeneration:
+            out.append(ResidualGroup("no battery charging", po["cell_current_A"], kind=">=",
+                                     scale=pk.max_cell_current_A, unit="A", row_labels=["cell current >= 0"]))
+        margin = _num(nodes.parameters.get("stall_margin_cl", _row(self.stall_margin_cl, K))).ravel() * np.ones(K)
+        cols = np.flatnonzero(margin >= 0.0)
+        expr, labels = stall_margin_rows(self.vlm, aero["vlm"], self.lifting_wings, self.strip_eta, env["rho"],
+                                         env["V"], env["mu"], _row(margin), nodes.parameters.get(
+                                             "flap_deflection", _row(0.0, K)), cols, exposed=self.strip_exposed)
+        if expr is not None:
+            out.append(ResidualGroup("stall margin", expr, kind="<=", scale=0.1, unit="-", row_labels=labels,
+                                     columns=cols))
+        return out
+
+    def _outputs(self, nodes, rot, aero, po, env) -> dict:
+        K, V, alpha, rho = env["K"], env["V"], env["alpha"], env["rho"]
+        r, q = aero["vlm"], aero["q"]
+        T_tot = sum(gm.config.count * rot[gm.name]["T"] for gm in self.groups)
+        P_shaft = sum(gm.config.count * rot[gm.name]["Q"] * rot[gm.name]["omega"] for gm in self.groups)
+        P_thrust = sum(gm.config.count * (rot[gm.name]["T"] * rot[gm.name]["cos"] - rot[gm.name]["H"]
+                                          * rot[gm.name]["sin"]) for gm in self.groups) * V
+        P_axial = sum(gm.config.count * rot[gm.name]["T"] * rot[gm.name]["v_ax"] for gm in self.groups)
         out = {
             "CL": Output(r["CL"], "-", "lift coefficient on S_ref"),
-            "CD": Output(D / (q * self.S_ref + 1e-9), "-", "drag coefficient on S_ref"),
-            "CDi": Output(r["CDi"], "-", "induced drag coefficient (Trefftz plane)"),
-            "lift_N": Output(L, "N"), "drag_N": Output(D, "N"),
-            "induced_drag_N": Output(r["D_i"], "N"), "parasite_drag_N": Output(D_parasite, "N"),
-            "drag_device_drag_N": Output(D_device, "N", "gear/flap drag deployed on approach (in parasite)"),
-            "drag_device_deployment": Output(deploy, "-", "fraction of the segment's drag_device_area_m2"),
+            "CD": Output(aero["D"] / (q * self.S_ref + 1e-9), "-", "drag coefficient on S_ref"),
+            "CDi": Output(aero["D_i"] / (q * self.S_ref + 1e-9), "-", "induced drag coefficient (swirl credit bounded)"),
+            "lift_N": Output(aero["L"], "N"), "drag_N": Output(aero["D"], "N"),
+            "induced_drag_N": Output(aero["D_i"], "N"), "parasite_drag_N": Output(aero["D_parasite"], "N"),
+            "drag_device_drag_N": Output(aero["D_device"], "N", "gear/flap drag deployed on approach (in parasite)"),
+            "drag_device_deployment": Output(aero["deploy"], "-", "fraction of the segment's drag_device_area_m2"),
+            "swirl_recovered_power_W": Output(aero["swirl_recovered_W"], "W",
+                                              "near-field thrust power of the wing in the slipstreams' swirl"),
+            "swirl_available_power_W": Output(aero["swirl_available_W"], "W",
+                                              "rotational kinetic-energy flux of all slipstreams"),
+            "swirl_credited_power_W": Output(aero["swirl_credit_W"], "W", "swirl power credited (bounded)"),
             "angle_of_attack_deg": Output(alpha / u.DEG, "deg"),
-            "thrust_N": Output(n_rot * T1, "N", "total thrust"),
-            "thrust_power_W": Output(n_rot * (T1 * ca_r - H1 * sa_r) * V, "W",
-                                     "rotor force along the path times speed (useful propulsive power)"),
-            "rotor_speed_rpm": Output(omega / u.RPM, "rpm"),
-            "tip_mach": Output(tip_mach, "-"),
+            "thrust_N": Output(T_tot, "N", "total thrust"),
+            "thrust_power_W": Output(P_thrust, "W", "rotor force along the path times speed (useful propulsive power)"),
             "shaft_power_W": Output(P_shaft, "W", "total shaft power"),
-            "propulsive_efficiency": Output(n_rot * T1 * v_ax / (P_shaft + 1e-9), "-"),
+            "propulsive_efficiency": Output(P_axial / (P_shaft + 1e-9), "-"),
             "battery_power_W": Output(po["chemical_power_W"], "W", "chemical power drawn from the cells"),
             "terminal_power_W": Output(po["battery_power_W"], "W"),
-            "state_of_charge": Output(soc, "-"),
-            "throttle": Output(po["throttle"], "-"),
+            "state_of_charge": Output(nodes.states["state_of_charge"], "-"),
             "cell_current_A": Output(po["cell_current_A"], "A"),
-            "motor_efficiency": Output(po["motor_efficiency"], "-"),
+            "cell_voltage_V": Output(po["cell_voltage_V"], "V"),
         }
-        self._last = {"vlm": r, "bemt": bm, "powertrain": po}
-        return NodeEvaluation(mass_kg=self.togw, force_along_path_N=F_t, force_normal_N=F_n, residuals=residuals,
-                              force_scale_N=self.togw_baseline_kg * G0,
-                              state_derivatives={"state_of_charge": po["soc_rate_per_s"]}, outputs=out)
+        for i, gm in enumerate(self.groups):
+            o, mo, g = rot[gm.name], po["groups"][gm.name], gm.config
+            tip = ca.sqrt((o["omega"] * gm.design["R"]) ** 2 + V * V) / env["a_s"]
+            eff = o["Q"] * o["omega"] / (mo["motor_power_in_W"] + 1e-9)
+            per = {"thrust_N": Output(g.count * o["T"], "N", f"{g.name}: thrust of the group"),
+                   "rotor_speed_rpm": Output(o["omega"] / u.RPM, "rpm"), "tip_mach": Output(tip, "-"),
+                   "shaft_power_W": Output(g.count * o["Q"] * o["omega"], "W"),
+                   "motor_power_fraction": Output(o["Q"] * o["omega"] / gm.design["P_rated"], "-",
+                                                  "shaft power / continuous rating"),
+                   "throttle": Output(mo["throttle"], "-"), "motor_efficiency": Output(eff, "-")}
+            for k, v in per.items():
+                out[f"{g.name}.{k}"] = v
+            if i == 0:   # the first group under the plain names (single-group reports)
+                for k in ("rotor_speed_rpm", "tip_mach", "throttle", "motor_efficiency", "motor_power_fraction"):
+                    out[k] = per[k]
+        return out
 
     def _drag_device(self, nodes, q):
         """Gear/flap drag where the segment allows it (``drag_device_area_m2`` > 0):
@@ -534,104 +721,9 @@ class Aircraft:
         deploy = ca.densify(ca.mtimes(delta, spread))
         return q * _row(area) * deploy, deploy
 
-    def stall_limits(self, airfoil: str) -> tuple:
-        """(alpha0, lift slope, cl_min, cl_max) of a section at Re 1e6 (numbers, cached)."""
-        cache = self.__dict__.setdefault("_stall_cache", {})
-        if airfoil not in cache:
-            from ..airfoil import Airfoil
-            af = Airfoil.from_name(airfoil)
-            a = np.radians(np.linspace(-30.0, 30.0, 601))
-            cl = np.asarray(af.cl(a, 1e6), float).ravel()
-            cache[airfoil] = (af, float(af.alpha0_rad), float(af.lift_slope_per_rad), float(cl[a < 0].min()),
-                              float(cl[a > 0].max()))
-        return cache[airfoil]
-
-    def stall_correction(self, vlm, r, pd, rho, V, width: float = 0.1):
-        """Lift and drag corrections (N, 1 x K) of strips past stall.
-
-        The lattice is linear: a strip at sectional cl beyond the section's cl_max
-        (or below cl_min) is read as a section at the equivalent attached angle
-        ``alpha_e = alpha_0 + cl/a`` (a: the section's lift slope) and given the
-        full-circle section coefficients there (``mdo.airfoil``: AERODAS/flat-plate
-        post-stall).  The switch is a logistic weight of width 0.1 in cl, so the
-        lattice is untouched below stall; in transition (the tilt-wing at 45 deg)
-        the wing then loses lift and gains pressure drag as a real wing does, instead
-        of the lattice's unbounded linear lift.
-        """
-        g = vlm.geometry
-        cl_loc = r["cl_local"]
-        K = cl_loc.shape[1]
-        Vl = r["V_local"]
-        c = g["strip_chord"].T
-        w = g["strip_width"].T
-        dL = 0.0
-        dD = 0.0
-        names = [str(a) for a in vlm.strip_airfoil]
-        for name in sorted(set(names)):
-            if name == "None":
-                continue
-            idx = [i for i, a in enumerate(names) if a == name]
-            af, a0, slope, cl_min, cl_max = self.stall_limits(name)
-            cl_i = cl_loc[idx, :]
-            alpha_e = a0 + cl_i / slope
-            cl_af, cd_af, _ = af.coefficients(alpha_e, pd["Re"][idx, :])
-            wgt = 0.5 * (1 + ca.tanh(0.5 * (cl_i - cl_max) / width)) + 0.5 * (1 + ca.tanh(0.5 * (cl_min - cl_i) / width))
-            q_loc = 0.5 * ca.repmat(rho, len(idx), 1) * Vl[idx, :] ** 2
-            area = ca.repmat(c[idx] * w[idx], 1, K)
-            dL = dL + ca.mtimes(ca.DM.ones(1, len(idx)), wgt * (cl_af - cl_i) * q_loc * area)
-            dD = dD + ca.mtimes(ca.DM.ones(1, len(idx)), wgt * (cd_af - pd["cd"][idx, :]) * q_loc * area)
-        factor = 2.0 if vlm.symmetric else 1.0
-        return factor * dL, factor * dD
-
-    def transition_nodes(self, wma) -> np.ndarray:
-        """Nodes whose rotors see in-plane flow worth azimuth averaging: a tilted wing
-        between cruise (0) and hover (90 deg).  Elsewhere the inflow is axial."""
-        wma = np.asarray(wma, float).ravel()
-        if self.n_azimuth == 1:
-            return np.zeros(wma.size, bool)
-        tilt_deg = np.degrees(wma)
-        return (np.abs(tilt_deg) > 1.0) & (np.abs(tilt_deg - 90.0) > 1.0)
-
-    def _bemt_nodes(self, K, wma, d, pitch, omega, v_ax, v_ip, rho, mu, a_s, phi):
-        """BEMT outputs at all K nodes: azimuth-averaged where the rotors are tilted in
-        forward flight, axial elsewhere (the unused azimuth rows of phi then copy the
-        axial ones, so that every unknown has an equation)."""
-        g, n, m = self.group, self.n_stations, self.n_azimuth
-        common = dict(radius_m=d["R"], hub_fraction=g.hub_fraction, blades=g.blades,
-                      chord_m=self.blade["chord_m"], twist_rad=self.blade["twist_rad"], spin=1.0)
-        per = dict(pitch_rad=pitch, omega_radps=omega, v_axial_mps=v_ax, v_inplane_mps=v_ip, rho_kgpm3=rho,
-                   mu_Pas=mu, a_mps=a_s)
-        mask = self.transition_nodes(wma)
-        if m == 1 or mask.all():
-            return self.bemt.map(K)(**common, **per, phi_rad=phi), None
-        it, ia = np.flatnonzero(mask), np.flatnonzero(~mask)
-        axial = bemt_function(self.section, n, 1, outputs="nlp")
-        pieces = []
-        if it.size:
-            pieces.append((it, self.bemt.map(it.size)(**common, **{k: _cols(v, it, K) for k, v in per.items()},
-                                                         phi_rad=phi[:, list(it)])))
-        pa = phi[:n, list(ia)]
-        pieces.append((ia, axial.map(ia.size)(**common, **{k: _cols(v, ia, K) for k, v in per.items()},
-                                             phi_rad=pa)))
-        order = np.concatenate([p[0] for p in pieces])
-        # column j of the stacked blocks is node order[j]: perm[j, order[j]] = 1 puts it back
-        perm = ca.DM.triplet(list(range(K)), [int(o) for o in order], ca.DM.ones(K), K, K)
-        out = {}
-        for key in pieces[0][1].keys():
-            if key == "residual":
-                continue
-            out[key] = ca.mtimes(ca.horzcat(*[p[1][key] for p in pieces]), perm)
-        rows_m = [f"r{i} psi{j}" for j in range(m) for i in range(n)]
-        groups = []
-        if it.size:
-            groups.append(("BEMT (azimuth-averaged)", pieces[0][1]["residual"], it, rows_m))
-        groups.append(("BEMT (axial)", pieces[-1][1]["residual"], ia, rows_m[:n]))
-        # unused azimuth rows at the axial nodes follow the axial solution
-        groups.append(("BEMT azimuth copies", phi[n:, list(ia)] - ca.repmat(pa, m - 1, 1), ia, rows_m[n:]))
-        return out, groups
-
     # ------------------------------------------------------------------ guesses
     def initial_guess(self, nodes) -> dict:
         """Physics-based guesses at the baseline design (:mod:`mdo.vehicle.guess`)."""
         from .guess import initial_guess
         return initial_guess(self, nodes)
+

@@ -30,6 +30,9 @@ A vehicle is any object with the attributes and methods of :class:`Vehicle`
     Physics-based guesses (numpy, rows x K) for each unknown and for
     ``"body_angle_rad"`` from the *numeric* node conditions (momentum-theory
     power, level-flight angle of attack).
+``final_limits(final_states)`` -> ``list[ResidualGroup]`` (optional)
+    Scalar inequalities on the states at the end of the mission (e.g. the state of
+    charge that must remain after the reserve); the mission constrains them.
 ``evaluate(nodes, unknowns)`` -> :class:`NodeEvaluation`
     The physics at ALL K nodes of the mission at once (rows are nodes): forces
     in the path frame, residual groups, state derivatives, outputs.  Evaluating
@@ -120,6 +123,8 @@ class ResidualGroup:
     ``scale`` is a typical magnitude of the residual's terms in ``unit``
     (the constraint IPOPT sees is expr/scale).  ``kind`` may be ``'<='`` or
     ``'>='`` for limits (e.g. a cell current), compared with zero.
+    ``columns``: the node indices of the columns of ``expr`` when it covers only
+    some nodes (rows x len(columns)); None = all K nodes.
     """
 
     name: str
@@ -128,6 +133,7 @@ class ResidualGroup:
     unit: str = "-"
     kind: str = "=="
     row_labels: Sequence[str] | None = None
+    columns: Sequence[int] | None = None
 
 
 @dataclass

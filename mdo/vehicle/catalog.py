@@ -33,9 +33,10 @@ import numpy as np
 
 from ..core import units as u
 from ..core.atmosphere import speed_of_sound
-from .config import BatteryConfig, FuselageConfig, RotorGroupConfig, VehicleConfig, WingConfig
+from .config import BatteryConfig, FuselageConfig, MotorConfig, RotorGroupConfig, VehicleConfig, WingConfig
 
-__all__ = ["ga2p", "ga8p", "ttw", "VEHICLES", "design_rpm_for_tip_mach", "GA_APPROACH_DRAG_AREA_M2"]
+__all__ = ["ga2p", "ga8p", "ttw", "VEHICLES", "design_rpm_for_tip_mach", "GA_APPROACH_DRAG_AREA_M2", "GA_FLAP_SPAN_ETA",
+           "GA_FLAP_CLMAX_INCREMENT"]
 
 GA_SECTIONS = (0.0, 0.25, 0.5, 0.75, 1.0)
 
@@ -58,6 +59,28 @@ TTW_AIRFRAME_CALIBRATION = 0.70
 # retractable gear of the same class; 0.40 m^2 is ΔCD 0.027 on the X-57's 14.76 m^2.
 GA_APPROACH_DRAG_AREA_M2 = 0.40
 
+# Motors.  The paper's ratings (Table 1: 2 x 52.7 kW, 8 x 25.19 kW, 8 x 100 kW) are the
+# initial values; the rating is sized with the mission (MotorConfig.sized) so that no
+# node exceeds it.  Take-off and climb segments may use a short-time rating of 1.2 x the
+# continuous one for up to 5 minutes each.  The factor is an ASSUMPTION, stated: piston
+# engines of the class carry a 5-minute take-off rating above maximum continuous (Rotax
+# 912 S: 73.5 kW take-off for 5 min, 69 kW continuous, 1.07 x; Rotax Operators Manual
+# 912 Series, Sec. 2.1), and electric motors are limited by winding temperature, which
+# allows a larger short-time overload; 1.2 x is a middle figure, an option of the vehicle.
+GA_MOTOR = dict(short_time_power_factor=1.2, short_time_segments=("DER", "ICA", "CL", "RCL"),
+                short_time_duration_s=300.0)
+TTW_MOTOR = dict(short_time_power_factor=1.2, short_time_segments=("VC", "VT", "CT1", "CT2", "DT", "VD"),
+                 short_time_duration_s=300.0)
+
+
+# Flaps of the P2006T wing: single-slotted, inboard of the ailerons.  The flapped span
+# 0.09-0.62 of the semispan (fuselage side to aileron) is read from the P2006T three-view (aileron outboard of the
+# flap, fuselage inboard; an estimate, stated); the section cl_max increment of a
+# single-slotted flap is 1.3 c'/c with c'/c ~ 1 (Raymer, Aircraft Design 6th ed.,
+# Table 12.2).  Segments set flap_deflection (0-1): see mdo.mission.profiles.ga_segments.
+GA_FLAP_SPAN_ETA = (0.09, 0.62)
+GA_FLAP_CLMAX_INCREMENT = 1.3
+
 
 def design_rpm_for_tip_mach(radius_m, speed_mps, altitude_m, tip_mach=0.6) -> float:
     """rpm at which the helical tip Mach number sqrt((Omega R)^2 + V^2)/a equals ``tip_mach``."""
@@ -67,15 +90,16 @@ def design_rpm_for_tip_mach(radius_m, speed_mps, altitude_m, tip_mach=0.6) -> fl
 
 def _ga_airframe():
     main = WingConfig("main_wing", span_m=11.4, area_m2=14.76, taper=0.70, section_eta=GA_SECTIONS,
-                      twist_deg=(3.00, 2.75, 2.50, 2.25, 2.00), airfoil="NACA_63_412",
+                      twist_deg=(3.00, 2.75, 2.50, 2.25, 2.00), airfoil="NACA_63_412", role="main",
+                      flap_span_eta=GA_FLAP_SPAN_ETA, flap_clmax_increment=GA_FLAP_CLMAX_INCREMENT,
                       thickness_to_chord=0.12, root_le_x_m=2.93, root_z_m=1.01)
     htail = WingConfig("horizontal_tail", span_m=3.3, area_m2=2.54, taper=1.0, section_eta=(0.0, 1.0),
                        twist_deg=(0.0, 0.0), airfoil="NACA_0015", thickness_to_chord=0.12,
-                       root_le_x_m=7.7, root_z_m=0.25)
+                       root_le_x_m=7.7, root_z_m=0.25, role="horizontal_tail")
     vtail = WingConfig("vertical_tail", span_m=1.854, area_m2=2.258, taper=0.6858 / 1.6764,
                        section_eta=(0.0, 1.0), twist_deg=(0.0, 0.0), airfoil="NACA_0015",
                        thickness_to_chord=0.12, sweep_quarter_chord_deg=25.0, root_le_x_m=6.75,
-                       root_z_m=0.623, vertical=True)
+                       root_z_m=0.623, role="fin")
     fuselage = FuselageConfig(length_m=8.28, width_m=42 * u.INCH, height_m=62 * u.INCH,
                               wetted_area_m2=30000 * u.INCH ** 2, tail_arm_m=4.66)
     return main, htail, vtail, fuselage
@@ -88,12 +112,12 @@ def ga2p(rotation: str = "inboard_up") -> VehicleConfig:
         "propellers", wings=("main_wing",), span_eta=(0.23,), blades=3, radius_m=0.97,
         design_thrust_N=900.0, design_speed_mps=135 * u.MPH, design_cl=0.7,
         design_rpm=round(design_rpm_for_tip_mach(1.12, 119.04 * u.MPH, 2500 * u.FT)),
-        design_altitude_m=2500 * u.FT, motor_rated_power_W=52.7e3, airfoil="NACA_4412",
-        x_ahead_of_le_m=0.93, z_below_wing_m=0.226, rotation=rotation)
+        design_altitude_m=2500 * u.FT, motor=MotorConfig(52.7e3, **GA_MOTOR), airfoil="NACA_4412",
+        x_ahead_of_le_m=0.93, z_below_wing_m=0.226, rotation=rotation, nacelle_wetted_area_m2=4.5)
     return VehicleConfig(
         "GA-2P", "airplane", wings=(main, htail, vtail), rotor_groups=(props,), fuselage=fus,
         battery=BatteryConfig(120, 80), togw_reference_kg=3549 * u.LB,
-        mass_inputs={"airframe_calibration": GA_AIRFRAME_CALIBRATION, "nacelle_wetted_area_m2": 4.5, "main_gear_length_in": 24.0,
+        mass_inputs={"airframe_calibration": GA_AIRFRAME_CALIBRATION, "main_gear_length_in": 24.0,
                      "nose_gear_length_in": 20.0, "uninstalled_avionics_lb": 40.0},
         notes=("X-57 Mod II airframe (P2006T wing and tails) per SUAVE's model; "
                "nacelle 2 m long, 42 in diameter (SUAVE), wetted ~4.5 m^2 each.",))
@@ -106,12 +130,12 @@ def ga8p(rotation: str = "inboard_up") -> VehicleConfig:
         "propellers", wings=("main_wing",), span_eta=(0.25, 0.5, 0.75, 1.0), blades=5, radius_m=0.58,
         design_thrust_N=350.0, design_speed_mps=130 * u.MPH, design_cl=0.7,
         design_rpm=round(design_rpm_for_tip_mach(0.55, 138.58 * u.MPH, 2500 * u.FT)),
-        design_altitude_m=2500 * u.FT, motor_rated_power_W=25.19e3, airfoil="NACA_4412",
-        x_ahead_of_le_m=0.56, z_below_wing_m=0.0, rotation=rotation)
+        design_altitude_m=2500 * u.FT, motor=MotorConfig(25.19e3, **GA_MOTOR), airfoil="NACA_4412",
+        x_ahead_of_le_m=0.56, z_below_wing_m=0.0, rotation=rotation, nacelle_wetted_area_m2=1.2)
     return VehicleConfig(
         "GA-8P", "airplane", wings=(main, htail, vtail), rotor_groups=(props,), fuselage=fus,
         battery=BatteryConfig(120, 80), togw_reference_kg=3622 * u.LB,
-        mass_inputs={"airframe_calibration": GA_AIRFRAME_CALIBRATION, "nacelle_wetted_area_m2": 1.2, "main_gear_length_in": 24.0,
+        mass_inputs={"airframe_calibration": GA_AIRFRAME_CALIBRATION, "main_gear_length_in": 24.0,
                      "nose_gear_length_in": 20.0, "uninstalled_avionics_lb": 40.0},
         notes=("Nacelles scaled to the 25 kW motors: ~1.2 m^2 wetted each.",))
 
@@ -121,24 +145,24 @@ def ttw(rotation: str = "inboard_up") -> VehicleConfig:
     sections = GA_SECTIONS
     tandem = WingConfig("tandem_wing", span_m=9.6, area_m2=10.85, taper=1.0, section_eta=sections,
                         twist_deg=(4.0, 3.0, 2.0, 1.0, 0.0), airfoil="NACA_63_412",
-                        thickness_to_chord=0.12, root_le_x_m=0.6, root_z_m=0.4, tilting=True)
+                        thickness_to_chord=0.12, root_le_x_m=0.6, root_z_m=0.4, tilting=True, role="tandem")
     main = WingConfig("main_wing", span_m=9.6, area_m2=10.85, taper=1.0, section_eta=sections,
                       twist_deg=(4.0, 3.0, 2.0, 1.0, 0.0), airfoil="NACA_63_412",
-                      thickness_to_chord=0.12, root_le_x_m=4.6, root_z_m=1.6, tilting=True)
+                      thickness_to_chord=0.12, root_le_x_m=4.6, root_z_m=1.6, tilting=True, role="main")
     fin = WingConfig("vertical_tail", span_m=1.2, area_m2=1.2, taper=0.6, section_eta=(0.0, 1.0),
                      twist_deg=(0.0, 0.0), airfoil="NACA_0015", thickness_to_chord=0.12,
-                     sweep_quarter_chord_deg=25.0, root_le_x_m=4.9, root_z_m=1.0, vertical=True)
+                     sweep_quarter_chord_deg=25.0, root_le_x_m=4.9, root_z_m=1.0, role="fin")
     rotors = RotorGroupConfig(
         "rotors", wings=("main_wing", "tandem_wing"), span_eta=(0.38, 1.0), blades=3, radius_m=1.2,
         design_thrust_N=5395.5, design_speed_mps=22.36 * u.MPH, design_cl=0.7,
         design_rpm=round(design_rpm_for_tip_mach(1.38, 18.253 * u.MPH, 0.0)),
-        design_altitude_m=0.0, motor_rated_power_W=100e3, airfoil="NACA_4412",
-        x_ahead_of_le_m=0.6, z_below_wing_m=0.0, rotation=rotation)
+        design_altitude_m=0.0, motor=MotorConfig(100e3, **TTW_MOTOR), airfoil="NACA_4412",
+        x_ahead_of_le_m=0.6, z_below_wing_m=0.0, rotation=rotation, nacelle_wetted_area_m2=1.5)
     fus = FuselageConfig(length_m=6.1, width_m=1.3, height_m=1.5, wetted_area_m2=20.0, tail_arm_m=4.0)
     return VehicleConfig(
         "TTW", "tilt_wing", wings=(main, tandem, fin), rotor_groups=(rotors,), fuselage=fus,
         battery=BatteryConfig(150, 120), togw_reference_kg=4850 * u.LB,
-        mass_inputs={"airframe_calibration": TTW_AIRFRAME_CALIBRATION, "nacelle_wetted_area_m2": 1.5, "main_gear_length_in": 12.0,
+        mass_inputs={"airframe_calibration": TTW_AIRFRAME_CALIBRATION, "main_gear_length_in": 12.0,
                      "nose_gear_length_in": 12.0, "uninstalled_avionics_lb": 60.0},
         notes=("Tilt-wing layout (wing positions, fuselage size, fin) is ours: the paper gives only "
                "length 6.1 m, span 9.6 m per wing, S_ref 21.7 m^2.",))

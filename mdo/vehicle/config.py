@@ -23,8 +23,15 @@ import numpy as np
 
 from ..core.errors import InputError, check_positive, check_range
 
-__all__ = ["WingConfig", "RotorGroupConfig", "FuselageConfig", "BatteryConfig",
-           "VehicleConfig", "replace"]
+__all__ = ["WingConfig", "RotorGroupConfig", "MotorConfig", "FuselageConfig", "BatteryConfig",
+           "VehicleConfig", "replace", "WING_ROLES", "LIFTING_ROLES"]
+
+#: What a wing is for; every discipline reads this, never the wing's name.
+#: ``main`` and ``tandem`` wings carry the lift and are designed (span, taper, twists);
+#: a ``horizontal_tail`` is analysed in the lattice but not designed; a ``fin`` is a
+#: single vertical surface (drag and mass only).
+WING_ROLES = ("main", "tandem", "horizontal_tail", "fin")
+LIFTING_ROLES = ("main", "tandem")
 
 
 @dataclass(frozen=True)
@@ -42,17 +49,28 @@ class WingConfig:
     section_eta: tuple
     twist_deg: tuple
     airfoil: str
+    role: str = "main"             # one of WING_ROLES
     thickness_to_chord: float = 0.12
     sweep_quarter_chord_deg: float = 0.0
     dihedral_deg: float = 0.0
     incidence_deg: float = 0.0
     root_le_x_m: float = 0.0
     root_z_m: float = 0.0
-    vertical: bool = False
     tilting: bool = False          # TTW: the wing and its rotors tilt by the wing-mounted angle
+    flap_span_eta: tuple = (0.0, 0.0)   # flapped part of the semispan (fractions), for the stall margin
+    flap_clmax_increment: float = 0.0   # section cl_max gain of the fully deflected flap (mdo.vehicle.stall)
     pivot_x_m: float | None = None  # tilt axis position (defaults to the quarter chord)
 
     def __post_init__(self):
+        if self.role not in WING_ROLES:
+            raise InputError(f"{self.name}.role", f"one of {', '.join(WING_ROLES)}, got {self.role!r}")
+        lo, hi = (float(x) for x in self.flap_span_eta)
+        if not (0.0 <= lo <= hi <= 1.0):
+            raise InputError(f"{self.name}.flap_span_eta", f"0 <= start <= end <= 1, got {self.flap_span_eta!r}")
+        check_range(f"{self.name}.flap_clmax_increment", self.flap_clmax_increment, 0.0, 2.5)
+        if self.tilting and self.role not in LIFTING_ROLES:
+            raise InputError(f"{self.name}.tilting", f"only a main or tandem wing may tilt, this one is "
+                             f"a {self.role}")
         check_positive(f"{self.name}.span_m", self.span_m, "m")
         check_positive(f"{self.name}.area_m2", self.area_m2, "m^2")
         check_range(f"{self.name}.taper", self.taper, 0.05, 2.0)
@@ -62,6 +80,16 @@ class WingConfig:
         eta = np.asarray(self.section_eta, float)
         if eta[0] != 0.0 or eta[-1] != 1.0 or np.any(np.diff(eta) <= 0):
             raise InputError(f"{self.name}.section_eta", "must increase from 0 (root) to 1 (tip)")
+
+    @property
+    def vertical(self) -> bool:
+        """A fin: one vertical surface, not mirrored."""
+        return self.role == "fin"
+
+    @property
+    def lifting(self) -> bool:
+        """A main or tandem wing: carries the lift and is designed."""
+        return self.role in LIFTING_ROLES
 
     @property
     def aspect_ratio(self) -> float:
@@ -75,6 +103,49 @@ class WingConfig:
     def mean_aerodynamic_chord_m(self) -> float:
         t = self.taper
         return 2.0 / 3.0 * self.root_chord_m * (1 + t + t * t) / (1 + t)
+
+
+@dataclass(frozen=True)
+class MotorConfig:
+    """The motors of one rotor group (one per rotor, identical).
+
+    ``rated_power_W`` is the continuous shaft-power rating: the initial value when the
+    rating is sized by the optimizer (``sized=True``: a variable of every stage, the
+    analysis included, bounded below by the mission's need through the power limit,
+    so the motors - and their mass - follow the mission), or a fixed rating
+    (``sized=False``).  ``rated_rpm`` defaults to the group's design rpm.
+    ``short_time_power_factor`` (>= 1) is a take-off/climb rating as a multiple of the
+    continuous one, allowed in the segments ``short_time_segments`` (their names),
+    for at most ``short_time_duration_s`` each (checked against the segment
+    durations when the mission is built).  ``max_speed_factor``: the highest speed
+    as a multiple of the rated speed (bearings, back-emf).
+    DC motor model: ``mdo.powertrain.motor.size_dc_motor`` (Eq. M6) at
+    ``rated_voltage_fraction`` of the pack's nominal voltage, peak efficiency from
+    ``rated_efficiency`` and ``copper_loss_fraction``.
+    """
+    rated_power_W: float
+    rated_rpm: float | None = None
+    sized: bool = True
+    rated_voltage_fraction: float = 0.9
+    rated_efficiency: float = 0.94
+    copper_loss_fraction: float = 0.6
+    short_time_power_factor: float = 1.0
+    short_time_segments: tuple = ()
+    short_time_duration_s: float = 300.0
+    max_speed_factor: float = 1.2
+    esc_efficiency: float = 0.95
+
+    def __post_init__(self):
+        check_positive("motor.rated_power_W", self.rated_power_W, "W")
+        if self.rated_rpm is not None:
+            check_positive("motor.rated_rpm", self.rated_rpm, "rpm")
+        check_range("motor.rated_voltage_fraction", self.rated_voltage_fraction, 0.5, 1.0)
+        check_range("motor.rated_efficiency", self.rated_efficiency, 0.5, 0.99)
+        check_range("motor.copper_loss_fraction", self.copper_loss_fraction, 0.05, 0.95)
+        check_range("motor.short_time_power_factor", self.short_time_power_factor, 1.0, 3.0)
+        check_positive("motor.short_time_duration_s", self.short_time_duration_s, "s")
+        check_range("motor.max_speed_factor", self.max_speed_factor, 1.0, 3.0)
+        check_range("motor.esc_efficiency", self.esc_efficiency, 0.5, 1.0)
 
 
 @dataclass(frozen=True)
@@ -95,13 +166,15 @@ class RotorGroupConfig:
     design_cl: float
     design_rpm: float
     design_altitude_m: float
-    motor_rated_power_W: float
+    motor: MotorConfig
     airfoil: str = "NACA_4412"
     hub_fraction: float = 0.12
     x_ahead_of_le_m: float = 0.0     # rotor disk ahead of the local leading edge
     z_below_wing_m: float = 0.0
     rotation: str = "inboard_up"
     tip_mach_max: float = 0.6
+    folded_drag_area_m2: float = 0.0   # flat-plate area of one stopped/folded rotor (segments that switch it off)
+    nacelle_wetted_area_m2: float = 0.0  # wetted area of the nacelle of ONE rotor (drag and mass)
 
     def __post_init__(self):
         check_positive(f"{self.name}.radius_m", self.radius_m, "m")
@@ -109,13 +182,21 @@ class RotorGroupConfig:
         check_range(f"{self.name}.span_eta", np.asarray(self.span_eta, float), 0.0, 1.0)
         check_positive(f"{self.name}.blades", self.blades)
         check_positive(f"{self.name}.design_rpm", self.design_rpm, "rpm")
-        check_positive(f"{self.name}.motor_rated_power_W", self.motor_rated_power_W, "W")
+        if not isinstance(self.motor, MotorConfig):
+            raise InputError(f"{self.name}.motor", f"a MotorConfig, got {type(self.motor).__name__}")
+        check_range(f"{self.name}.tip_mach_max", self.tip_mach_max, 0.1, 0.95)
+        check_range(f"{self.name}.folded_drag_area_m2", self.folded_drag_area_m2, 0.0, 5.0, "m^2")
+        check_range(f"{self.name}.nacelle_wetted_area_m2", self.nacelle_wetted_area_m2, 0.0, 50.0, "m^2")
         if self.rotation not in ("inboard_up", "outboard_up"):
             raise InputError(f"{self.name}.rotation", "must be 'inboard_up' or 'outboard_up'")
 
     @property
     def count(self) -> int:
         return 2 * len(self.span_eta) * len(self.wings)
+
+    @property
+    def motor_rated_rpm(self) -> float:
+        return self.motor.rated_rpm if self.motor.rated_rpm is not None else self.design_rpm
 
 
 @dataclass(frozen=True)
@@ -126,30 +207,92 @@ class FuselageConfig:
     wetted_area_m2: float
     tail_arm_m: float               # wing quarter chord to horizontal tail quarter chord
 
+    def __post_init__(self):
+        for k in ("length_m", "width_m", "height_m", "wetted_area_m2", "tail_arm_m"):
+            check_positive(f"fuselage.{k}", getattr(self, k), "m" if k != "wetted_area_m2" else "m^2")
+
 
 @dataclass(frozen=True)
 class BatteryConfig:
+    """The battery: ``cells_series`` x ``cells_parallel`` cells of the 18650 NMC model
+    (``mdo.powertrain.cell.nmc18650``: the paper's Panasonic cell, 48 g, 3.55 Ah).
+
+    The ONE place the pack is defined: the mass build-up and the electrical pack
+    (``mdo.powertrain.Pack``) both read it.  ``packaging_factor`` multiplies the cell
+    mass for casing, wiring, thermal management and BMS: 1.42, the module factor
+    SUAVE derives from the X-57 Maxwell battery (Chin et al., AIAA SciTech 2019).
+    ``max_cell_current_A`` (8 A, the largest measured discharge) and
+    ``min_cell_voltage_V`` (2.5 V, the measured cut-off) are the cell's operating
+    limits; ``reserve_soc``: the state of charge that must remain at the end of the
+    mission (after the reserve segments).
+    """
     cells_series: int
     cells_parallel: int
     cell_mass_kg: float = 0.048     # Panasonic 18650 NMC, 48 g (shared/data/battery SOURCES)
     cell_capacity_Ah: float = 3.55
     cell_nominal_V: float = 3.6
-    packaging_fraction: float = 0.0  # pack structure/BMS mass as a fraction of cell mass
+    packaging_factor: float = 1.42
+    max_cell_current_A: float = 8.0
+    min_cell_voltage_V: float = 2.5
+    reserve_soc: float = 0.2
+    temperature_C: float = 25.0
+
+    def __post_init__(self):
+        for name in ("cells_series", "cells_parallel"):
+            v = getattr(self, name)
+            if not isinstance(v, (int, np.integer)) or v < 1:
+                raise InputError(f"battery.{name}", f"a whole number of cells >= 1, got {v!r}")
+        check_positive("battery.cell_mass_kg", self.cell_mass_kg, "kg")
+        check_range("battery.packaging_factor", self.packaging_factor, 1.0, 3.0)
+        check_positive("battery.max_cell_current_A", self.max_cell_current_A, "A")
+        check_range("battery.min_cell_voltage_V", self.min_cell_voltage_V, 2.0, 4.0, "V")
+        check_range("battery.reserve_soc", self.reserve_soc, 0.0, 0.9)
 
     @property
     def cells(self) -> int:
         return self.cells_series * self.cells_parallel
 
     @property
+    def mass_kg(self) -> float:
+        """Packaged battery mass, kg (cells x cell mass x packaging factor)."""
+        return self.cells * self.cell_mass_kg * self.packaging_factor
+
+    def pack(self):
+        """The electrical pack of this battery (``mdo.powertrain.Pack``)."""
+        from ..powertrain import Pack
+        return Pack(self.cells_series, self.cells_parallel, temperature_C=self.temperature_C,
+                    packaging_factor=self.packaging_factor, max_cell_current_A=self.max_cell_current_A,
+                    min_cell_voltage_V=self.min_cell_voltage_V)
+
+    @property
     def energy_nominal_kWh(self) -> float:
         return self.cells * self.cell_capacity_Ah * self.cell_nominal_V / 1000.0
 
 
+VEHICLE_KINDS = ("airplane", "tilt_wing")
+
+#: Disks of two rotor groups whose planes are this far apart along x (m) may overlap in
+#: span (staggered, like the X-57's wing-tip cruise propellers ahead of its high-lift ones).
+STAGGER_CLEARANCE_M = 0.3
+
+
+def disks_in_one_plane(group_a: str, x_ahead_a: float, group_b: str, x_ahead_b: float) -> bool:
+    """Whether two disks can collide: same group, or planes closer than STAGGER_CLEARANCE_M."""
+    return group_a == group_b or abs(x_ahead_a - x_ahead_b) < STAGGER_CLEARANCE_M
+
+
 @dataclass(frozen=True)
 class VehicleConfig:
+    """A whole aircraft: the single source of truth every discipline reads.
+
+    ``kind``: 'airplane' or 'tilt_wing' (lifting wings with ``tilting=True`` and
+    their rotors turn by the segment's wing-mounted angle).  ``wings``: WingConfig
+    with explicit roles (exactly one 'main').  ``name`` is a label only: nothing
+    depends on it, nor on the names of wings and groups beyond cross-references.
+    """
     name: str
     kind: str                       # 'airplane' or 'tilt_wing'
-    wings: tuple                    # WingConfig, the first is the main wing
+    wings: tuple                    # WingConfig, exactly one with role 'main'
     rotor_groups: tuple
     fuselage: FuselageConfig
     battery: BatteryConfig
@@ -165,23 +308,49 @@ class VehicleConfig:
     notes: tuple = ()
 
     def __post_init__(self):
+        if self.kind not in VEHICLE_KINDS:
+            raise InputError("kind", f"one of {', '.join(VEHICLE_KINDS)}, got {self.kind!r}")
+        for what, items in (("wings", self.wings), ("rotor_groups", self.rotor_groups)):
+            seen = [x.name for x in items]
+            dup = sorted({n for n in seen if seen.count(n) > 1})
+            if dup:
+                raise InputError(what, f"names must be unique, {', '.join(dup)} repeated")
+        mains = [w.name for w in self.wings if w.role == "main"]
+        if len(mains) != 1:
+            raise InputError("wings", f"exactly one wing with role 'main', got {len(mains)} ({', '.join(mains)})")
+        if not self.rotor_groups:
+            raise InputError("rotor_groups", "at least one rotor group")
+        if not isinstance(self.battery, BatteryConfig):
+            raise InputError("battery", f"a BatteryConfig, got {type(self.battery).__name__}")
+        check_positive("cruise_speed_mps", self.cruise_speed_mps, "m/s")
+        check_range("cruise_altitude_m", self.cruise_altitude_m, 0.0, 20000.0, "m")
         names = {w.name for w in self.wings}
+        disks = {}
         for g in self.rotor_groups:
             for wn in g.wings:
                 if wn not in names:
                     raise InputError(f"{g.name}.wings", f"no wing named {wn!r}; have {', '.join(sorted(names))}")
+                if not self.wing(wn).lifting:
+                    raise InputError(f"{g.name}.wings", f"rotors must sit on a main or tandem wing; {wn} is a "
+                                     f"{self.wing(wn).role}")
                 semi = self.wing(wn).span_m / 2
-                y = sorted(float(e) * semi for e in g.span_eta)
-                if y[0] < g.radius_m:
-                    raise InputError(f"{g.name}.span_eta",
-                                     f"the inner disk on {wn} (y = {y[0]:.3f} m) crosses the symmetry plane and "
-                                     f"overlaps its mirror image: allowed y >= R = {g.radius_m:.3f} m, i.e. "
-                                     f"span_eta >= {g.radius_m / semi:.3f}")
-                for a, b in zip(y[:-1], y[1:]):
-                    if b - a < 2 * g.radius_m:
-                        raise InputError(f"{g.name}.span_eta",
-                                         f"rotors at y = {a:.3f} m and {b:.3f} m on {wn} overlap: allowed spacing "
-                                         f">= 2 R = {2 * g.radius_m:.3f} m, got {b - a:.3f} m")
+                for e in g.span_eta:
+                    disks.setdefault(wn, []).append((float(e) * semi, g.radius_m, g.name, g.x_ahead_of_le_m))
+        for wn, ds in disks.items():
+            ds.sort()
+            if ds[0][0] < ds[0][1]:
+                y, R, gn, _ = ds[0]
+                raise InputError(f"{gn}.span_eta",
+                                 f"the inner disk on {wn} (y = {y:.3f} m) crosses the symmetry plane and "
+                                 f"overlaps its mirror image: allowed y >= R = {R:.3f} m, i.e. "
+                                 f"span_eta >= {R / (self.wing(wn).span_m / 2):.3f}")
+            for (ya, Ra, ga, xa), (yb, Rb, gb, xb) in zip(ds[:-1], ds[1:]):
+                if not disks_in_one_plane(ga, xa, gb, xb):
+                    continue
+                if yb - ya < Ra + Rb:
+                    raise InputError(f"{gb}.span_eta",
+                                     f"rotors at y = {ya:.3f} m ({ga}) and {yb:.3f} m ({gb}) on {wn} overlap: "
+                                     f"allowed spacing >= R1 + R2 = {Ra + Rb:.3f} m, got {yb - ya:.3f} m")
 
     def wing(self, name: str) -> WingConfig:
         for w in self.wings:
@@ -192,7 +361,26 @@ class VehicleConfig:
 
     @property
     def main_wing(self) -> WingConfig:
-        return self.wings[0]
+        """The wing with role 'main' (reference chord and span)."""
+        return next(w for w in self.wings if w.role == "main")
+
+    @property
+    def lifting_wings(self) -> list:
+        """Main and tandem wings, in definition order (designed, carry the lift)."""
+        return [w for w in self.wings if w.lifting]
+
+    @property
+    def horizontal_tails(self) -> list:
+        return [w for w in self.wings if w.role == "horizontal_tail"]
+
+    @property
+    def fins(self) -> list:
+        return [w for w in self.wings if w.role == "fin"]
+
+    @property
+    def aux_power_W(self) -> float:
+        """Avionics and payload power drawn from the bus, W."""
+        return self.avionics_power_W + self.payload_power_W
 
     @property
     def rotors(self) -> int:

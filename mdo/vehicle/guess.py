@@ -12,22 +12,28 @@ from ..core.atmosphere import atmosphere
 from ..rotor import PHI_MAX_RAD, PHI_MIN_RAD, analyze_inputs
 from ..wing import VLM, body_drag, profile_drag
 from .base import G0
+from .stall import stall_correction
 
-__all__ = ["initial_guess", "numeric_design", "bemt_numeric", "omega_for_thrust"]
+__all__ = ["initial_guess", "bemt_numeric", "omega_for_thrust", "numeric_bus"]
 
-def numeric_design(ac) -> dict:
-    """The baseline design as numbers (what the guesses are computed at)."""
-    g = ac.group
-    d = {"R": g.radius_m, "eta": np.asarray(g.span_eta, float), "wings": {}}
-    for w in ac.lifting_wings:
-        d["wings"][w.name] = {"span": w.span_m, "taper": w.taper,
-                              "twist": np.radians(np.asarray(w.twist_deg, float))}
-    return d
+
+def numeric_bus(ac):
+    """The vehicle's network with every motor at its configured rating (numbers)."""
+    from ..powertrain import Bus, MotorGroup, size_dc_motor
+    from ..core import units as u
+    groups = []
+    for gm in ac.groups:
+        g, m = gm.config, gm.config.motor
+        motor = size_dc_motor(m.rated_power_W, g.motor_rated_rpm * u.RPM,
+                              m.rated_voltage_fraction * ac.pack.nominal_voltage_V, rated_efficiency=m.rated_efficiency,
+                              copper_loss_fraction=m.copper_loss_fraction)
+        groups.append(MotorGroup(g.name, motor, g.count, esc_efficiency=m.esc_efficiency))
+    return Bus(ac.pack, groups, aux_power_W=ac.config.aux_power_W)
 
 def initial_guess(ac, nodes) -> dict:
     """Physics-based guesses at the baseline design: lattice lift for the angle of
     attack, drag build-up for the thrust, BEMT rotor speed for that thrust."""
-    g, cfg = ac.group, ac.config
+    cfg = ac.config
     K = nodes.size
     h = np.asarray(nodes.altitude_m, float).ravel()
     V = np.maximum(np.asarray(nodes.speed_mps, float).ravel(), 0.5)
@@ -36,11 +42,11 @@ def initial_guess(ac, nodes) -> dict:
     gdot = np.asarray(nodes.flight_path_angle_rate_radps, float).ravel()
     wma = np.asarray(nodes.parameters.get("wing_mounted_angle_rad", np.zeros(K)), float).ravel() * np.ones(K)
     pitch = np.asarray(nodes.parameters.get("pitch_command_rad", np.zeros(K)), float).ravel() * np.ones(K)
+    flap = np.asarray(nodes.parameters.get("flap_deflection", np.zeros(K)), float).ravel() * np.ones(K)
     atm = atmosphere(h)
     rho, mu, a_s = atm["density_kgpm3"], atm["dynamic_viscosity_Pas"], atm["speed_of_sound_mps"]
     m = ac.togw_baseline_kg
-    dn = numeric_design(ac)
-    surfaces, _ = ac._wing_surfaces(dn, numeric=True)
+    surfaces, _ = ac.wing_surfaces(ac.numeric_design())
     vlm = VLM(surfaces, S_ref=ac.S_ref if hasattr(ac, "S_ref") else sum(w.area_m2 for w in ac.lifting_wings),
               mach_ref=0.2)
     S = float(vlm.geometry["S_ref"]) if not isinstance(vlm.geometry["S_ref"], ca.MX) else ac.S_ref
@@ -50,6 +56,11 @@ def initial_guess(ac, nodes) -> dict:
     q = 0.5 * rho * V ** 2
     tilting = cfg.kind == "tilt_wing"
     # lift needed (thrust's normal share ignored); clip the angle of attack to the linear range
+    vz1 = ac.flap_upwash(flap, ca.DM.ones(1, K), vlm)
+    if vz1 is not None:   # the flaps' lift at zero angle of attack, per node
+        z = ca.DM.zeros(vlm.n_panels, K)
+        CL0 = np.asarray(vlm.solve(ca.DM.zeros(1, K), 1.0, v_ext=(z, z, vz1), v_ext_bound=(z, z, z))["CL"],
+                         float).ravel()
     CL_req = m * (G0 * np.cos(gam) + V * gdot) / (q * S)
     alpha = np.clip((CL_req - CL0) / CLa - (wma if tilting else 0.0), np.radians(-8), np.radians(12))
     theta_in = np.asarray(nodes.body_angle_rad, float).ravel()
@@ -62,9 +73,13 @@ def initial_guess(ac, nodes) -> dict:
         """Lift, drag, and the force the thrust must supply (path frame) at attitudes th."""
         a_ = th - gam[sel]
         wa = a_ + wma[sel] if tilting else a_
-        r = vlm.solve(DM(wa), DM(V[sel]), rho=DM(rho[sel]), mach=DM(V[sel] / a_s[sel]))
+        vz = ac.flap_upwash(flap[sel], DM(V[sel]), vlm)
+        zero = ca.DM.zeros(vlm.n_panels, int(np.sum(sel)) if sel.dtype == bool else len(sel))
+        r = vlm.solve(DM(wa), DM(V[sel]), rho=DM(rho[sel]), mach=DM(V[sel] / a_s[sel]),
+                      v_ext=None if vz is None else (zero, zero, vz), v_ext_bound=None if vz is None else
+                      (zero, zero, zero))
         pdn = profile_drag(vlm, r, DM(rho[sel]), DM(mu[sel]), DM(V[sel] / a_s[sel]))
-        Ls, Ds = (np.asarray(x, float).ravel() for x in ac.stall_correction(
+        Ls, Ds = (np.asarray(x, float).ravel() for x in stall_correction(
             vlm, r, pdn, DM(rho[sel]), DM(V[sel]))) if ac.wing_stall else (0.0, 0.0)
         Db = np.asarray(body_drag(ac.bodies, DM(V[sel]), DM(rho[sel]), DM(mu[sel]),
                                   DM(V[sel] / a_s[sel]))[0]).ravel()
@@ -103,33 +118,72 @@ def initial_guess(ac, nodes) -> dict:
         nt, nn = forces(theta, allsel)
         need_t, need_n = nt, nn
     alpha = theta - gam
-    a_rot = alpha + (wma if tilting else 0.0)
-    T_total = np.where(vectored, np.hypot(need_t, need_n),
-                       need_t / np.maximum(np.cos(a_rot), 0.3))
-    T1 = np.maximum(T_total / g.count, 0.03 * m * G0 / g.count)
-    mask = ac.transition_nodes(wma)
-    n, m = ac.n_stations, ac.n_azimuth
-    omega = np.zeros(K)
-    phi = np.zeros((n * m, K))
-    Q1 = np.zeros(K)
-    for sel, mm in ((mask, m), (~mask, 1)):
-        if not sel.any():
-            continue
-        args = (V[sel] * np.cos(a_rot[sel]), V[sel] * np.sin(a_rot[sel]), h[sel], pitch[sel])
-        omega[sel] = omega_for_thrust(ac, T1[sel], *args, n_azimuth=mm)
-        res = bemt_numeric(ac, omega[sel], *args, n_azimuth=mm)
-        ph = np.asarray(res["phi_rad"], float).reshape(n * mm, int(sel.sum()))
-        phi[:, sel] = ph if mm == m else np.tile(ph, (m, 1))
-        Q1[sel] = np.asarray(res["torque_Nm"], float).ravel()
-    phi = np.clip(phi, PHI_MIN_RAD, PHI_MAX_RAD)
-    soc = np.asarray(nodes.states.get("state_of_charge", np.ones(K)), float).ravel() * np.ones(K)
-    po = ac.powertrain.analyze(Q1, omega, np.clip(soc, 0.05, 1.0))
-    return {"body_angle_rad": theta, f"{g.name}.omega": omega, f"{g.name}.phi": phi,
-            "battery_current_A": np.asarray(po["battery_current_A"], float).ravel()}
+    return _rotor_guesses(ac, nodes, theta, alpha, vectored, need_t, need_n, V, h, wma, pitch, m)
 
-def bemt_numeric(ac, omega, v_ax, v_ip, h, pitch, n_azimuth=1):
-    g = ac.group
-    blade = ac.baseline_blade()
+
+def _rotor_guesses(ac, nodes, theta, alpha, vectored, need_t, need_n, V, h, wma, pitch, m) -> dict:
+    """Split the force the rotors must supply among the running groups (by disk area),
+    find each group's rotor speed for its share, and the pack current."""
+    K = theta.size
+    out = {"body_angle_rad": theta}
+    shares, acts = {}, {}
+    for gm in ac.groups:
+        act = np.asarray(nodes.parameters.get(f"{gm.name}.active", np.ones(K)), float).ravel() * np.ones(K)
+        acts[gm.name] = act > 0.5
+        shares[gm.name] = acts[gm.name] * gm.config.count * gm.config.radius_m ** 2
+    total = sum(shares.values())
+    total = np.where(total > 0, total, 1.0)
+    torques, omegas = [], []
+    for gm in ac.groups:
+        g = gm.config
+        a_rot = alpha + (wma if gm.tilting else 0.0)
+        T_total = np.where(vectored & gm.tilting, np.hypot(need_t, need_n), need_t / np.maximum(np.cos(a_rot), 0.3))
+        frac = shares[gm.name] / total
+        T1 = np.maximum(T_total * frac / g.count, 0.03 * m * G0 / max(1, sum(x.config.count for x in ac.groups)))
+        mask = gm.transition_nodes(wma)
+        n, mm_ = ac.n_stations, gm.n_azimuth
+        omega, phi, Q1 = np.zeros(K), np.zeros((n * mm_, K)), np.zeros(K)
+        for sel, mm in ((mask, mm_), (~mask, 1)):
+            if not sel.any():
+                continue
+            args = (V[sel] * np.cos(a_rot[sel]), V[sel] * np.sin(a_rot[sel]), h[sel], pitch[sel])
+            om = omega_for_thrust(gm, T1[sel], *args, n_azimuth=mm)
+            om = np.where(acts[gm.name][sel], om, gm.omega_design)
+            omega[sel] = om
+            res = bemt_numeric(gm, om, *args, n_azimuth=mm)
+            ph = np.asarray(res["phi_rad"], float).reshape(n * mm, int(sel.sum()))
+            phi[:, sel] = ph if mm == mm_ else np.tile(ph, (mm_, 1))
+            Q1[sel] = np.asarray(res["torque_Nm"], float).ravel()
+        out[f"{g.name}.omega"] = omega
+        out[f"{g.name}.phi"] = np.clip(phi, PHI_MIN_RAD, PHI_MAX_RAD)
+        _size_motor_guess(ac, gm, nodes, np.where(acts[gm.name], Q1, 0.0), omega, acts[gm.name])
+        torques.append(np.where(acts[gm.name], Q1, 0.0))
+        omegas.append(omega)
+    soc = np.asarray(nodes.states.get("state_of_charge", np.ones(K)), float).ravel() * np.ones(K)
+    po = numeric_bus(ac).analyze(torques, omegas, np.clip(soc, 0.05, 1.0))
+    out["battery_current_A"] = np.asarray(po["battery_current_A"], float).ravel()
+    return out
+
+
+def _size_motor_guess(ac, gm, nodes, Q1, omega, active):
+    """Initial motor rating of a sized group: the least that meets the power, torque and
+    speed limits at the guessed operating points (+5 %), so the limits start satisfied."""
+    m = gm.config.motor
+    if not m.sized or ac._problem is None or not active.any():
+        return
+    f = gm.short_time_row(nodes)
+    w_r = 1.02 * float(np.max(omega[active]))          # throttle and speed limits met with margin
+    P_r = 1.05 * max(float(np.max((Q1 * omega / f)[active])), float(np.max((Q1 * w_r / f)[active])), 1.0)
+    for name, value, var in ((f"{gm.name}.motor_rated_power", P_r, "P_rated"),
+                             (f"{gm.name}.motor_rated_speed", w_r, "omega_rated")):
+        lo, hi = ac._problem.variables[name].lower, ac._problem.variables[name].upper
+        ac._problem.set_initial(name, float(np.clip(value, np.min(lo), np.max(hi))))
+
+
+def bemt_numeric(gm, omega, v_ax, v_ip, h, pitch, n_azimuth=1):
+    """Numeric BEMT of rotor group ``gm`` (a RotorGroupModel) at its baseline blade."""
+    g = gm.config
+    blade = gm.baseline_blade()
     atm = atmosphere(h)
     K = omega.size
     inputs = {"radius_m": g.radius_m, "hub_fraction": g.hub_fraction, "blades": g.blades,
@@ -139,16 +193,16 @@ def bemt_numeric(ac, omega, v_ax, v_ip, h, pitch, n_azimuth=1):
               "v_inplane_mps": v_ip if n_azimuth > 1 else np.zeros(K),
               "rho_kgpm3": atm["density_kgpm3"], "mu_Pas": atm["dynamic_viscosity_Pas"],
               "a_mps": atm["speed_of_sound_mps"], "spin": np.ones(K)}
-    return analyze_inputs(ac.section, inputs, ac.n_stations, n_azimuth)
+    return analyze_inputs(gm.section, inputs, gm.n_stations, n_azimuth)
 
-def omega_for_thrust(ac, T1, v_ax, v_ip, h, pitch, iterations=22, n_azimuth=1):
+def omega_for_thrust(gm, T1, v_ax, v_ip, h, pitch, iterations=22, n_azimuth=1):
     """Rotor speed giving thrust ``T1`` per rotor at each node: a scan for the
     lowest speed whose thrust reaches T1 (thrust need not be monotonic in speed
     for a blade far from its design inflow), then bisection in that interval."""
-    grid = ac.omega_design * np.linspace(0.05, 2.5, 25)
+    grid = gm.omega_design * np.linspace(0.05, 2.5, 25)
     K = T1.size
     rep = lambda x: np.tile(np.asarray(x, float) * np.ones(K), grid.size)  # noqa: E731
-    Tg = np.asarray(bemt_numeric(ac, np.repeat(grid, K), rep(v_ax), rep(v_ip), rep(h), rep(pitch),
+    Tg = np.asarray(bemt_numeric(gm, np.repeat(grid, K), rep(v_ax), rep(v_ip), rep(h), rep(pitch),
                                        n_azimuth)["thrust_N"], float).reshape(grid.size, K)
     reach = Tg >= T1[None, :]
     j = np.where(reach.any(axis=0), np.argmax(reach, axis=0), grid.size - 1)
@@ -156,7 +210,7 @@ def omega_for_thrust(ac, T1, v_ax, v_ip, h, pitch, iterations=22, n_azimuth=1):
     lo = grid[np.maximum(j - 1, 0)]
     for _ in range(iterations):
         mid = 0.5 * (lo + hi)
-        T = np.asarray(bemt_numeric(ac, mid, v_ax, v_ip, h, pitch, n_azimuth)["thrust_N"], float).ravel()
+        T = np.asarray(bemt_numeric(gm, mid, v_ax, v_ip, h, pitch, n_azimuth)["thrust_N"], float).ravel()
         lo = np.where(T < T1, mid, lo)
         hi = np.where(T < T1, hi, mid)
     return 0.5 * (lo + hi)

@@ -18,7 +18,9 @@ pounds, feet, square feet, lb/ft^2, horsepower and are converted here at the edg
   torque electric motors: ``W_lb = 0.3928 Q_ftlb^0.8587`` (p. 213).
 * Roskam, *Airplane Design* Part V (General Dynamics propeller method):
   ``W_lb = K_p N_p N_bl^0.391 (D_ft P_shp / (1000 N_p))^0.782``, K_p = 31.92.
-* Battery: cells x 48 g (Panasonic 18650 NMC of the paper) x (1 + packaging).
+* Battery: ``BatteryConfig.mass_kg`` = cells x 48 g (Panasonic 18650 NMC of the paper)
+  x the packaging factor (1.42, X-57 module build-up) - the same number the
+  electrical pack carries.
 * Payload: 4 passengers x 200 lb (FAA AC 120-27F standard summer adult with
   personal items).
 
@@ -53,16 +55,25 @@ class MassDesign:
     """The design quantities the build-up responds to (numbers or CasADi expressions).
 
     ``wing_span_m[name]``, ``wing_taper[name]`` per lifting surface (areas are held
-    at their configured values, as in Eq. 7), ``rotor_radius_m[group]``.
+    at their configured values, as in Eq. 7), ``rotor_radius_m[group]``,
+    ``motor_rated_power_W[group]`` (the sized rating; default the configured one).
     """
     wing_span_m: dict
     wing_taper: dict
     rotor_radius_m: dict
+    motor_rated_power_W: dict = None
+    motor_rated_speed_radps: dict = None
 
     @classmethod
     def baseline(cls, cfg: VehicleConfig) -> "MassDesign":
         return cls({w.name: w.span_m for w in cfg.wings}, {w.name: w.taper for w in cfg.wings},
                    {g.name: g.radius_m for g in cfg.rotor_groups})
+
+    def rated_power_W(self, g):
+        return (self.motor_rated_power_W or {}).get(g.name, g.motor.rated_power_W)
+
+    def rated_speed_radps(self, g):
+        return (self.motor_rated_speed_radps or {}).get(g.name, g.motor_rated_rpm * u.RPM)
 
 
 def _q_cruise_psf(cfg: VehicleConfig) -> float:
@@ -108,22 +119,19 @@ def mass_terms(cfg: VehicleConfig, togw_kg, design: MassDesign | None = None) ->
     """
     d = design or MassDesign.baseline(cfg)
     mi = {"main_gear_length_in": 24.0, "nose_gear_length_in": 20.0, "uninstalled_avionics_lb": 40.0,
-          "gear_load_factor": 4.5, "nacelle_wetted_area_m2": 0.0}
+          "gear_load_factor": 4.5}
     mi.update(cfg.mass_inputs)
     W_lb = togw_kg / u.LB
     nz_w = cfg.ultimate_load_factor * W_lb
     q = _q_cruise_psf(cfg)
     terms = {}
-    lifting = [w for w in cfg.wings if not w.vertical]
-    for i, w in enumerate(lifting):
-        if i == 0 or w.tilting or w.name.startswith("tandem"):
-            terms[f"wing: {w.name}"] = _wing_lb(w, d.wing_span_m.get(w.name, w.span_m),
-                                               d.wing_taper.get(w.name, w.taper), nz_w, q) * u.LB
-        else:
-            terms[f"horizontal tail: {w.name}"] = _htail_lb(w, nz_w, q) * u.LB
-    for w in cfg.wings:
-        if w.vertical:
-            terms[f"vertical tail: {w.name}"] = _vtail_lb(w, nz_w, q) * u.LB
+    for w in cfg.lifting_wings:
+        terms[f"wing: {w.name}"] = _wing_lb(w, d.wing_span_m.get(w.name, w.span_m),
+                                           d.wing_taper.get(w.name, w.taper), nz_w, q) * u.LB
+    for w in cfg.horizontal_tails:
+        terms[f"horizontal tail: {w.name}"] = _htail_lb(w, nz_w, q) * u.LB
+    for w in cfg.fins:
+        terms[f"vertical tail: {w.name}"] = _vtail_lb(w, nz_w, q) * u.LB
     f = cfg.fuselage
     S_f = f.wetted_area_m2 / u.FT ** 2
     fineness = f.length_m / np.sqrt(f.width_m * f.height_m)
@@ -142,21 +150,23 @@ def mass_terms(cfg: VehicleConfig, togw_kg, design: MassDesign | None = None) ->
     tilting_mass = 0.0
     for g in cfg.rotor_groups:
         R = d.rotor_radius_m.get(g.name, g.radius_m)
-        omega = g.design_rpm * u.RPM
-        torque_ftlb = (g.motor_rated_power_W / omega) / (u.LBF * u.FT)
+        omega = d.rated_speed_radps(g)
+        P_r = d.rated_power_W(g)
+        # the motor is sized for its largest torque: the short-time rating at rated speed
+        torque_ftlb = (g.motor.short_time_power_factor * P_r / omega) / (u.LBF * u.FT)
         m_motor = g.count * 0.3928 * torque_ftlb ** 0.8587 * u.LB
         D_ft = 2 * R / u.FT
-        P_shp = g.motor_rated_power_W / u.HP
+        P_shp = g.motor.short_time_power_factor * P_r / u.HP
         m_prop = g.count * 31.92 * g.blades ** 0.391 * (D_ft * P_shp / 1000.0) ** 0.782 * u.LB
-        m_esc = g.count * g.motor_rated_power_W / ASSUMPTIONS["esc_specific_power_Wpkg"]
+        m_esc = g.count * g.motor.short_time_power_factor * P_r / ASSUMPTIONS["esc_specific_power_Wpkg"]
         terms[f"motors: {g.name} ({g.count})"] = m_motor
         terms[f"propellers: {g.name} ({g.count})"] = m_prop
         terms[f"motor controllers: {g.name} ({g.count})"] = m_esc
+        if g.nacelle_wetted_area_m2:
+            terms[f"nacelles: {g.name} ({g.count})"] = \
+                g.count * g.nacelle_wetted_area_m2 * ASSUMPTIONS["nacelle_areal_mass_kgpm2"]
         if any(cfg.wing(wn).tilting for wn in g.wings):
             tilting_mass = tilting_mass + m_motor + m_prop
-    if mi["nacelle_wetted_area_m2"]:
-        n_nac = sum(g.count for g in cfg.rotor_groups)
-        terms["nacelles"] = n_nac * mi["nacelle_wetted_area_m2"] * ASSUMPTIONS["nacelle_areal_mass_kgpm2"]
     if cfg.kind == "tilt_wing":
         wings_mass = sum(v for k, v in terms.items() if k.startswith("wing:"))
         terms["tilt mechanism"] = ASSUMPTIONS["tilt_mechanism_fraction"] * (tilting_mass + wings_mass)
@@ -165,8 +175,7 @@ def mass_terms(cfg: VehicleConfig, togw_kg, design: MassDesign | None = None) ->
         for k in list(terms):
             terms[k] = f_cal * terms[k]
     b = cfg.battery
-    terms[f"battery ({b.cells_series}s x {b.cells_parallel}p cells)"] = \
-        b.cells * b.cell_mass_kg * (1.0 + b.packaging_fraction)
+    terms[f"battery ({b.cells_series}s x {b.cells_parallel}p, packaged x {b.packaging_factor:g})"] = b.mass_kg
     terms[f"payload ({cfg.passengers} passengers)"] = cfg.passengers * cfg.passenger_mass_kg
     return terms
 

@@ -53,6 +53,18 @@ def _design_numbers(vehicle, solution) -> dict:
                               "twist_deg": np.degrees(_val(solution, w["twist"]).ravel()).tolist()}
     out["rotor_centers_m"] = [[float(_val(solution, c)) for c in p] for p in vehicle.rotor_positions]
     out["togw_kg"] = float(_val(solution, vehicle.togw))
+    out["battery_mass_kg"] = float(vehicle.config.battery.mass_kg)
+    out["rotor_groups"] = {}
+    for gm in vehicle.groups:
+        gd = gm.design
+        out["rotor_groups"][gm.name] = {
+            "count": gm.config.count, "tip_radius_m": float(_val(solution, gd["R"])),
+            "span_eta": _val(solution, gd["eta"]).ravel().tolist(),
+            "design_thrust_N": float(_val(solution, gd["T_design"])),
+            "design_speed_mps": float(_val(solution, gd["V_design"])),
+            "design_cl": float(_val(solution, gd["cl_design"])),
+            "motor_rated_power_W": float(_val(solution, gd["P_rated"])),
+            "motor_rated_rpm": float(_val(solution, gd["omega_rated"])) * 60 / (2 * math.pi)}
     return out
 
 
@@ -91,15 +103,24 @@ def _write_loading(vehicle, mission, solution, out: Path):
 
 
 def _write_blade(vehicle, solution, out: Path):
-    n = vehicle.n_stations
-    g = vehicle.group
+    """``blade.csv`` for the first rotor group, ``blade_<group>.csv`` for the others."""
+    for i, gm in enumerate(vehicle.groups):
+        R = _write_group_blade(gm, solution, out / ("blade.csv" if i == 0 else f"blade_{gm.name}.csv"))
+        if i == 0:
+            R0 = R
+    return R0
+
+
+def _write_group_blade(gm, solution, path: Path):
+    n = gm.n_stations
+    g = gm.config
     s, _ = station_layout(n)
     h = g.hub_fraction
-    R = float(_val(solution, vehicle.design["R"]))
+    R = float(_val(solution, gm.design["R"]))
     r_over_R = h + (1 - h) * np.asarray(s, float)
-    chord = _val(solution, vehicle.blade["chord_m"]).ravel()
-    twist = _val(solution, vehicle.blade["twist_rad"]).ravel()
-    with open(out / "blade.csv", "w", newline="") as f:
+    chord = _val(solution, gm.blade["chord_m"]).ravel()
+    twist = _val(solution, gm.blade["twist_rad"]).ravel()
+    with open(path, "w", newline="") as f:
         wr = csv.writer(f)
         wr.writerow(["r_over_R", "c_over_R", "beta_deg"])
         for i in range(n):
@@ -202,9 +223,12 @@ def add_vehicle_reports(problem, vehicle, mission):
     def vehicle_report(solution, out_dir):
         out = Path(out_dir)
         design = _design_numbers(vehicle, solution)
+        rg = design["rotor_groups"]
         md = MassDesign({n: w["span_m"] for n, w in design["wings"].items()},
                         {n: w["taper"] for n, w in design["wings"].items()},
-                        {vehicle.group.name: design["tip_radius_m"]})
+                        {n: g["tip_radius_m"] for n, g in rg.items()},
+                        {n: g["motor_rated_power_W"] for n, g in rg.items()},
+                        {n: g["motor_rated_rpm"] * 2 * math.pi / 60 for n, g in rg.items()})
         (out / "mass.md").write_text(mass_table_markdown(vehicle.config, md))
         (out / "design.json").write_text(json.dumps(design, indent=1))
         (out / "energy.md").write_text(energy_breakdown(vehicle, mission, solution))

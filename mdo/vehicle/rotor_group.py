@@ -1,0 +1,276 @@
+"""One rotor group of an :class:`~mdo.vehicle.aircraft.Aircraft`: its design variables,
+blade, motor, per-node BEMT and the limits of its rotors and motors.
+
+A group is identical rotors (``RotorGroupConfig``), identically throttled, on one or
+more lifting wings, each with its own motor (``MotorConfig``).  Everything here reads
+the group's definition; nothing depends on its name except the variable names.
+
+Design (Eq. 7 of Clarke et al., per group): Adkins-Liebeck design thrust, speed,
+tip radius and lift coefficient; the rotor span positions; the motor's continuous
+rating (sized: a variable of every stage, so the motors follow the mission).
+
+Per node: rotor speed and BEMT inflow angles are unknowns; thrust, torque and
+in-plane force come from the BEMT (azimuth-averaged at tilted-rotor transition
+nodes).  A segment may switch the group off (parameter ``<group>.active`` = 0:
+stopped or folded; no thrust, no torque, no wake, the folded drag area instead);
+at those nodes the rotor speed is held at the design speed so that the (unused)
+BEMT unknowns stay determined.
+
+Limits per node (named constraint groups, on by default, see ``limits``):
+
+* motor shaft power <= rating x (short-time factor in the take-off and climb segments);
+* motor torque <= rated torque x the same factor (the rated torque is P_r / omega_r; both
+  the rated power and the rated speed are sized with the mission, and the motor's
+  mass follows its largest torque, NDARC);
+* motor speed <= max_speed_factor x rated speed;
+* throttle <= 1 (motor voltage <= pack voltage, Eq. E1 of mdo.powertrain);
+* helical tip Mach ``sqrt((Omega R)^2 + V^2) / a <= M_max`` (Eq. 7's limit, at every
+  node where the design can be changed; the design point only as an option).
+"""
+from __future__ import annotations
+
+import numpy as np
+import casadi as ca
+
+from ..core import units as u
+from ..core.atmosphere import atmosphere
+from ..powertrain import MotorGroup, size_dc_motor
+from ..rotor import PHI_MAX_RAD, PHI_MIN_RAD, adkins_liebeck, add_adkins_liebeck, bemt_function, section
+from ..rotor.geometry import station_layout
+from .base import ResidualGroup, Unknown
+
+__all__ = ["RotorGroupModel"]
+
+
+def _cols(v, idx, K):
+    """Columns ``idx`` of a 1 x K row (or a scalar)."""
+    if isinstance(v, (ca.MX, ca.SX, ca.DM)) and v.shape[1] == K and K > 1:
+        return v[:, list(idx)]
+    return v
+
+
+def section_name(airfoil: str) -> str:
+    """The key of ``mdo.rotor.section`` for a catalog airfoil name ("NACA_4412" -> "naca4412")."""
+    return airfoil.lower().replace("_", "")
+
+
+class RotorGroupModel:
+    """The models of one ``RotorGroupConfig`` (see the module docstring)."""
+
+    def __init__(self, group, vehicle_kind: str, tilting: bool, *, n_stations: int, n_azimuth: int):
+        self.config = group
+        self.name = group.name
+        self.tilting = bool(tilting)
+        self.n_stations = int(n_stations)
+        self.n_azimuth = int(n_azimuth) if self.tilting else 1
+        self.section = section(section_name(group.airfoil))
+        self.omega_design = group.design_rpm * u.RPM
+        self.bemt = bemt_function(self.section, self.n_stations, self.n_azimuth, outputs="nlp")
+        self._axial = bemt_function(self.section, self.n_stations, 1, outputs="nlp") if self.n_azimuth > 1 \
+            else self.bemt
+        self._baseline_blade = None
+
+    # ------------------------------------------------------------------ design
+    def baseline_blade(self) -> dict:
+        """The numeric Adkins-Liebeck blade at the configured design point."""
+        if self._baseline_blade is None:
+            g = self.config
+            self._baseline_blade = adkins_liebeck(
+                blades=g.blades, radius_m=g.radius_m, speed_mps=g.design_speed_mps, airfoil=self.section,
+                cl_design=g.design_cl, thrust_N=g.design_thrust_N, omega_radps=self.omega_design,
+                hub_fraction=g.hub_fraction, altitude_m=g.design_altitude_m, n_stations=self.n_stations)
+        return self._baseline_blade
+
+    def add_design(self, problem, bounds, *, rotor_free: bool, positions_free: bool,
+                   design_point_constraint: bool) -> dict:
+        """Design variables, the blade (Adkins-Liebeck residuals) and the motor rating."""
+        g, b = self.config, bounds
+
+        def dv(name, init, lo, hi, unit, scale, desc, free=True, shape=1, design=True):
+            if not free:
+                lo, hi = init, init
+            return problem.variable(name, shape, unit=unit, scale=scale, lower=lo, upper=hi, init=init,
+                                    design=design, description=desc)
+
+        p = g.name
+        d = {"T_design": dv(f"{p}.design_thrust", g.design_thrust_N, b.design_thrust[0] * g.design_thrust_N,
+                            b.design_thrust[1] * g.design_thrust_N, "N", g.design_thrust_N,
+                            "Adkins-Liebeck design thrust", rotor_free),
+             "V_design": dv(f"{p}.design_speed", g.design_speed_mps, b.design_speed[0] * g.design_speed_mps,
+                            b.design_speed[1] * g.design_speed_mps, "m/s", max(g.design_speed_mps, 5.0),
+                            "Adkins-Liebeck design speed", rotor_free),
+             "R": dv(f"{p}.tip_radius", g.radius_m, b.tip_radius[0] * g.radius_m, b.tip_radius[1] * g.radius_m,
+                     "m", g.radius_m, "propeller/rotor tip radius", rotor_free),
+             "cl_design": dv(f"{p}.design_cl", g.design_cl, b.design_cl[0], b.design_cl[1], "-", 1.0,
+                             "Adkins-Liebeck design lift coefficient", rotor_free)}
+        eta0 = np.asarray(g.span_eta, float)
+        d["eta"] = dv(f"{p}.span_eta", eta0, b.span_eta[0], b.span_eta[1], "-", 1.0,
+                      "rotor span positions, fraction of the semispan", positions_free, shape=len(eta0))
+        m = g.motor
+        w_r = g.motor_rated_rpm * u.RPM
+        if m.sized:
+            # sized in every stage (not frozen by --analysis): the least rating the mission allows;
+            # the rated speed sets the speed constant (Eq. M6), so it is sized with it
+            d["P_rated"] = problem.variable(f"{p}.motor_rated_power", 1, unit="W", scale=m.rated_power_W,
+                                            lower=0.2 * m.rated_power_W, upper=10.0 * m.rated_power_W,
+                                            init=m.rated_power_W, design=False,
+                                            description="continuous shaft-power rating of each motor (sized)")
+            d["omega_rated"] = problem.variable(f"{p}.motor_rated_speed", 1, unit="rad/s", scale=w_r,
+                                                lower=0.4 * w_r, upper=2.5 * w_r, init=w_r, design=False,
+                                                description="rated speed of each motor (sized)")
+        else:
+            d["P_rated"], d["omega_rated"] = m.rated_power_W, w_r
+        self.design = d
+        atm_d = atmosphere(g.design_altitude_m)
+        al_inputs = {"target": d["T_design"], "speed_mps": d["V_design"], "radius_m": d["R"],
+                     "omega_radps": self.omega_design, "cl_design": d["cl_design"],
+                     "rho_kgpm3": float(atm_d["density_kgpm3"]), "mu_Pas": float(atm_d["dynamic_viscosity_Pas"]),
+                     "a_mps": float(atm_d["speed_of_sound_mps"]), "hub_fraction": g.hub_fraction,
+                     "blades": g.blades}
+        self.blade = add_adkins_liebeck(problem, f"{p}.blade", self.section, al_inputs,
+                                        n_stations=self.n_stations, init=self.baseline_blade())
+        a_d = float(atm_d["speed_of_sound_mps"])
+        tip2 = (self.omega_design * d["R"]) ** 2 + d["V_design"] ** 2
+        if design_point_constraint:
+            problem.constrain(f"{p} tip Mach (design point)", tip2 / (g.tip_mach_max * a_d) ** 2, kind="<=",
+                              rhs=1.0, scale=1.0, unit="-", labels=[f"{p} design point"])
+        self.tip_mach_design = ca.sqrt(tip2) / a_d
+        problem.output(f"{p}.tip_mach_design", self.tip_mach_design, unit="-", summary=True)
+        problem.output(f"{p}.motor_rated_power_kW", d["P_rated"] / 1000.0, unit="kW", summary=True)
+        problem.output(f"{p}.motor_rated_rpm", d["omega_rated"] / u.RPM, unit="rpm", summary=True)
+        return d
+
+    def motor_group(self, pack) -> MotorGroup:
+        """The group's motors, sized from the (symbolic) rating at the rated speed (Eq. M6)."""
+        m, g = self.config.motor, self.config
+        self.rated_speed_radps = self.design["omega_rated"]
+        motor = size_dc_motor(self.design["P_rated"], self.rated_speed_radps,
+                              m.rated_voltage_fraction * pack.nominal_voltage_V, rated_efficiency=m.rated_efficiency,
+                              copper_loss_fraction=m.copper_loss_fraction)
+        self.motor = MotorGroup(g.name, motor, g.count, esc_efficiency=m.esc_efficiency)
+        return self.motor
+
+    # ------------------------------------------------------------------ nodes
+    def unknowns(self) -> list:
+        n, m = self.n_stations, self.n_azimuth
+        return [
+            Unknown(f"{self.name}.omega", unit="rad/s", scale=self.omega_design, lower=0.05 * self.omega_design,
+                    upper=3.0 * self.omega_design, description="rotor speed (all rotors of the group alike)"),
+            Unknown(f"{self.name}.phi", unit="rad", scale=0.3, lower=PHI_MIN_RAD, upper=PHI_MAX_RAD, rows=n * m,
+                    description="BEMT inflow angles (station fastest, then azimuth)"),
+        ]
+
+    def transition_nodes(self, wma) -> np.ndarray:
+        """Nodes whose tilted rotors see in-plane flow worth azimuth averaging."""
+        wma = np.asarray(wma, float).ravel()
+        if self.n_azimuth == 1:
+            return np.zeros(wma.size, bool)
+        tilt_deg = np.degrees(wma)
+        return (np.abs(tilt_deg) > 1.0) & (np.abs(tilt_deg - 90.0) > 1.0)
+
+    def bemt_nodes(self, K, wma, pitch, omega, v_ax, v_ip, rho, mu, a_s, phi):
+        """BEMT outputs at all K nodes and the residual groups (``ResidualGroup`` with
+        ``columns``): azimuth-averaged at transition nodes, axial elsewhere (the unused
+        azimuth rows of phi then copy the axial ones, so that every unknown has an equation)."""
+        g, n, m = self.config, self.n_stations, self.n_azimuth
+        d = self.design
+        common = dict(radius_m=d["R"], hub_fraction=g.hub_fraction, blades=g.blades,
+                      chord_m=self.blade["chord_m"], twist_rad=self.blade["twist_rad"], spin=1.0)
+        per = dict(pitch_rad=pitch, omega_radps=omega, v_axial_mps=v_ax, v_inplane_mps=v_ip, rho_kgpm3=rho,
+                   mu_Pas=mu, a_mps=a_s)
+        rows_m = [f"r{i} psi{j}" for j in range(m) for i in range(n)]
+        mask = self.transition_nodes(wma)
+        if m == 1 or mask.all():
+            out = self.bemt.map(K)(**common, **per, phi_rad=phi)
+            return out, [ResidualGroup(f"{g.name} BEMT", out["residual"], row_labels=rows_m)]
+        it, ia = np.flatnonzero(mask), np.flatnonzero(~mask)
+        pieces = []
+        if it.size:
+            pieces.append((it, self.bemt.map(it.size)(**common, **{k: _cols(v, it, K) for k, v in per.items()},
+                                                         phi_rad=phi[:, list(it)])))
+        pa = phi[:n, list(ia)]
+        pieces.append((ia, self._axial.map(ia.size)(**common, **{k: _cols(v, ia, K) for k, v in per.items()},
+                                                   phi_rad=pa)))
+        order = np.concatenate([p[0] for p in pieces])
+        # column j of the stacked blocks is node order[j]: perm[j, order[j]] = 1 puts it back
+        perm = ca.DM.triplet(list(range(K)), [int(o) for o in order], ca.DM.ones(K), K, K)
+        out = {key: ca.mtimes(ca.horzcat(*[p[1][key] for p in pieces]), perm)
+               for key in pieces[0][1].keys() if key != "residual"}
+        groups = []
+        if it.size:
+            groups.append(ResidualGroup(f"{g.name} BEMT (azimuth-averaged)", pieces[0][1]["residual"],
+                                        row_labels=rows_m, columns=it))
+        groups.append(ResidualGroup(f"{g.name} BEMT (axial)", pieces[-1][1]["residual"], row_labels=rows_m[:n],
+                                    columns=ia))
+        groups.append(ResidualGroup(f"{g.name} BEMT azimuth copies", phi[n:, list(ia)] - ca.repmat(pa, m - 1, 1),
+                                    row_labels=rows_m[n:], columns=ia))
+        return out, groups
+
+    def swirl_power_W(self, bm, v_ax, rho):
+        """Rotational kinetic-energy flux one rotor's slipstream carries, W (1 x K).
+
+        Momentum theory: the swirl behind the disk is twice the induced swirl at the
+        disk, ``2 v_t`` (Glauert), carried by the annulus mass flow ``rho (V + v_a) 2 pi r dr``::
+
+            P_swirl = sum_i 1/2 rho (V + v_a,i) 2 pi r_i dr_i (2 v_t,i)^2
+
+        This is the most power a wing behind the rotor can recover from the swirl.
+        """
+        g = self.config
+        s, ds = station_layout(self.n_stations)
+        R = self.design["R"]
+        r = R * (g.hub_fraction + (1.0 - g.hub_fraction) * ca.DM(s))
+        dr = R * (1.0 - g.hub_fraction) * ca.DM(ds)
+        va, vt = bm["va_mps"], bm["vt_mps"]
+        K = va.shape[1]
+        w = ca.repmat(2 * np.pi * r * dr, 1, K)
+        axial = ca.repmat(v_ax, self.n_stations, 1) + va
+        return ca.sum1(0.5 * ca.repmat(rho, self.n_stations, 1) * axial * w * (2 * vt) ** 2)
+
+    # ------------------------------------------------------------------ limits
+    def short_time_row(self, nodes) -> np.ndarray:
+        """Per node: the power factor the motor may use there (1, or the short-time factor
+        in the segments the motor configuration names, if they are short enough)."""
+        from ..core.errors import InputError
+        m = self.config.motor
+        seg = list(nodes.segment)
+        f = np.ones(len(seg))
+        t = nodes.time_s
+        t_num = None if isinstance(t, (ca.MX, ca.SX)) else np.asarray(t, float).ravel()
+        for name in m.short_time_segments:
+            idx = [k for k, s in enumerate(seg) if s == name]
+            if not idx:
+                continue
+            if t_num is not None:
+                dur = float(t_num[idx[-1]] - t_num[idx[0]])
+                if dur > m.short_time_duration_s * (1 + 1e-9):
+                    raise InputError(f"{self.name}.motor.short_time_segments",
+                                     f"segment {name} lasts {dur:.0f} s, longer than the short-time rating's "
+                                     f"{m.short_time_duration_s:.0f} s; remove it or raise short_time_duration_s")
+            f[idx] = m.short_time_power_factor
+        return f
+
+    def limits(self, nodes, omega, torque, motor_out, speed, a_s, *, tip_mach_at_nodes: bool) -> list:
+        """The group's per-node limits as ``ResidualGroup`` inequalities (see the module docstring)."""
+        g, d = self.config, self.design
+        m = g.motor
+        K = nodes.size
+        f = ca.DM(self.short_time_row(nodes).reshape(1, -1))
+        P_r = d["P_rated"]
+        P0 = m.rated_power_W
+        Q_r = P_r / self.rated_speed_radps
+        lim = [
+            ResidualGroup(f"{g.name} motor power", torque * omega - f * P_r, scale=P0, unit="W", kind="<=",
+                          row_labels=["shaft power - rating"]),
+            ResidualGroup(f"{g.name} motor torque", torque - f * Q_r, scale=P0 / (g.motor_rated_rpm * u.RPM),
+                          unit="N m", kind="<=", row_labels=["torque - rated torque"]),
+            ResidualGroup(f"{g.name} motor speed", omega - m.max_speed_factor * self.rated_speed_radps,
+                          scale=g.motor_rated_rpm * u.RPM, unit="rad/s", kind="<=", row_labels=["speed - max speed"]),
+            ResidualGroup(f"{g.name} throttle", -motor_out["voltage_margin_V"], scale=100.0, unit="V", kind="<=",
+                          row_labels=["motor voltage - pack voltage"]),
+        ]
+        if tip_mach_at_nodes:
+            tip2 = ((omega * d["R"]) ** 2 + speed * speed) / (g.tip_mach_max * a_s) ** 2
+            lim.append(ResidualGroup(f"{g.name} tip Mach", tip2 - ca.DM.ones(1, K), scale=1.0, unit="-",
+                                     kind="<=", row_labels=[f"(M_tip/{g.tip_mach_max:g})^2 - 1"]))
+        return lim

@@ -1,0 +1,89 @@
+"""NASA X-57 Maxwell Mod IV: wing-tip cruise propellers plus twelve folding high-lift
+propellers, defined here from published figures and optimized over the GA profile.
+
+Not one of the paper's aircraft: everything is in this file (no change to ``mdo/``).
+Two rotor groups on one high-aspect-ratio wing: the cruise propellers (3 blades, 1.52 m,
+at the wing tips) fly the whole mission; the high-lift propellers (5 blades, 0.58 m, six
+per side) run only in the take-off and approach segments (DER, ICA, BL, FA) and are
+folded elsewhere (``highlift.active = 0``: no thrust, no wake, a small folded-blade drag).
+
+Published figures (NASA X-57 fact sheet FS-2017-07-008-AFRC; Borer et al., "Design and
+Performance of the NASA SCEPTOR Distributed Electric Propulsion Flight Demonstrator",
+AIAA 2016-3920; the Mod 4 geometry of SUAVE's regression vehicle ``X57_Mod4.py``, R.
+Erhard 2021): wing 6.144 m^2, span 31.6 ft (9.63 m), root/tip chord 2.48/1.74 ft; cruise
+propellers D = 1.523 m, 3 blades, designed at 174 mph and 8000 ft, 2250 rpm, design cl
+0.75, 60 kW cruise motors; high-lift propellers D = 0.58 m, 5 blades, 4000 rpm, designed
+at 64 mph, spaced 0.6 m from y = 1.05 m, 10.5 kW motors; battery 128s x 40p 18650 cells
+(460 V; 5120 cells in 16 modules), about 3000 lb gross; cruise 172 mph at 8000 ft.
+The X-57's cells (Samsung 18650-30Q, Chin et al., "Battery Performance Modeling on
+Maxwell X-57", AIAA SciTech 2019) are rated 15 A continuous: that is the cell-current
+limit here, beyond the 8 A of the measured curves the cell model is fitted to (an
+extrapolation of the cell model, stated).  The mass build-up (Raymer GA regressions, no
+calibration) gives 1348 kg = 2972 lb against NASA's "approximately 3000 lb".
+The P2006T fuselage and tails are kept (the X-57 is a modified P2006T).  The wing's
+section is not published in those sources: NACA 63-412 stands in.  The high-lift
+propellers' blown lift is captured with the "local" coupling (slipstream dynamic
+pressure in the wing forces), which over-predicts PROWIM's blown-lift rise (see
+mdo/wake/README.md) - stated, and an option.
+
+Options (``-o KEY=VALUE``): ``nodes`` (6), ``cruise_distance_nmi`` (50),
+``reserve_cruise_distance_nmi`` (5), ``cruise_altitude_ft`` (8000), ``cruise_speed_mph``
+(172), ``cells_parallel`` (40), ``coupling`` ("local"), ``wing_strips`` (20), ``n_stations`` (12).
+"""
+from mdo.core.units import FT, INCH, MPH, NMI
+from mdo.mission.profiles import ga_mission
+from mdo.nlp import Problem
+from mdo.studies import minimize_battery_energy
+from mdo.vehicle.aircraft import Aircraft
+from mdo.vehicle.config import (BatteryConfig, FuselageConfig, MotorConfig, RotorGroupConfig, VehicleConfig,
+                                WingConfig)
+
+SEMISPAN_M = 31.6 * FT / 2
+
+
+def x57_mod4(cells_parallel: int = 40, cruise_speed_mps: float = 172 * MPH,
+             cruise_altitude_m: float = 8000 * FT) -> VehicleConfig:
+    wing = WingConfig("wing", span_m=31.6 * FT, area_m2=6.144, taper=1.74 / 2.48, section_eta=(0.0, 0.5, 1.0),
+                      twist_deg=(3.0, 1.5, 0.0), airfoil="NACA_63_412", role="main", root_le_x_m=2.93,
+                      root_z_m=1.01, flap_span_eta=(0.09, 0.75), flap_clmax_increment=1.3)
+    htail = WingConfig("stabilator", span_m=3.454, area_m2=3.74, taper=0.762 / 1.397, section_eta=(0.0, 1.0),
+                       twist_deg=(0.0, 0.0), airfoil="NACA_0015", role="horizontal_tail", root_le_x_m=7.7,
+                       root_z_m=0.25)
+    fin = WingConfig("fin", span_m=1.854, area_m2=2.258, taper=0.6858 / 1.6764, section_eta=(0.0, 1.0),
+                     twist_deg=(0.0, 0.0), airfoil="NACA_0015", role="fin", sweep_quarter_chord_deg=25.0,
+                     root_le_x_m=6.75, root_z_m=0.623)
+    cruise = RotorGroupConfig(
+        "cruise", wings=("wing",), span_eta=(1.0,), blades=3, radius_m=1.523 / 2, design_thrust_N=900.0,
+        design_speed_mps=174 * MPH, design_cl=0.75, design_rpm=2250.0, design_altitude_m=8000 * FT,
+        motor=MotorConfig(60e3, short_time_power_factor=1.2, short_time_segments=("DER", "ICA", "RCL")),
+        x_ahead_of_le_m=1.0, nacelle_wetted_area_m2=1.5)
+    highlift = RotorGroupConfig(
+        "highlift", wings=("wing",), span_eta=tuple((1.05 + 0.6 * i) / SEMISPAN_M for i in range(6)), blades=5,
+        radius_m=0.29, design_thrust_N=250.0, design_speed_mps=64 * MPH, design_cl=0.75, design_rpm=4000.0,
+        design_altitude_m=1000 * FT, motor=MotorConfig(10.5e3, short_time_power_factor=1.2,
+                                                       short_time_segments=("DER", "ICA")),
+        x_ahead_of_le_m=0.4, folded_drag_area_m2=0.003, nacelle_wetted_area_m2=0.25)
+    fuselage = FuselageConfig(length_m=332.2 * INCH, width_m=42 * INCH, height_m=62 * INCH,
+                              wetted_area_m2=30000 * INCH ** 2, tail_arm_m=4.66)
+    return VehicleConfig(
+        "X-57 Mod IV", "airplane", wings=(wing, htail, fin), rotor_groups=(cruise, highlift), fuselage=fuselage,
+        battery=BatteryConfig(128, cells_parallel, max_cell_current_A=15.0), cruise_speed_mps=cruise_speed_mps,
+        cruise_altitude_m=cruise_altitude_m, togw_reference_kg=3000 * 0.45359237,
+        mass_inputs={"airframe_calibration": 1.0, "main_gear_length_in": 24.0, "nose_gear_length_in": 20.0,
+                     "uninstalled_avionics_lb": 40.0})
+
+
+def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 50.0,
+          reserve_cruise_distance_nmi: float = 5.0, cruise_altitude_ft: float = 8000.0,
+          cruise_speed_mph: float = 172.0, cells_parallel: int = 40, coupling: str = "local",
+          wing_strips: int = 20, n_stations: int = 12):
+    p = Problem("x57_mod4", "X-57 Maxwell Mod IV whole-mission optimization (two rotor groups)")
+    cfg = x57_mod4(cells_parallel, cruise_speed_mph * MPH, cruise_altitude_ft * FT)
+    vehicle = Aircraft(cfg, free=("rotor", "wing"), n_stations=n_stations, wing_strips=wing_strips,
+                       coupling=coupling, design_point_constraints=not analysis)
+    folded = {s: {"highlift.active": 0.0} for s in ("CL", "CR", "D", "DL", "RCL", "RCR", "RD")}
+    mission = ga_mission(vehicle, nodes=nodes, cruise_distance_m=cruise_distance_nmi * NMI,
+                         reserve_cruise_distance_m=reserve_cruise_distance_nmi * NMI,
+                         cruise_altitude_m=cruise_altitude_ft * FT, cruise_speed_mps=cruise_speed_mph * MPH,
+                         approach_drag_area_m2=0.40, extra=folded).build(p)
+    return minimize_battery_energy(p, vehicle, mission)
