@@ -37,14 +37,22 @@ OPTIONS = {
     "nodes": (int, 3, 30),
     "cruise_distance_nmi": (float, 1.0, 300.0),
     "reserve_cruise_distance_nmi": (float, 1.0, 100.0),
+    "cruise_altitude_ft": (float, 0.0, 25000.0),
+    "cruise_speed_mph": (float, 60.0, 300.0),
+    "cells_series": (int, 10, 400),
+    "cells_parallel": (int, 1, 400),
     "n_stations": (int, 6, 40),
     "n_azimuth": (int, 1, 12),
     "wing_strips": (int, 8, 60),
-    "tol": (float, 1e-10, 1e-2),
     "mass_model": (str, "buildup", "fixed"),
     "rotation": (str, "inboard_up", "outboard_up"),
     "coupling": (str, "swirl", "local", "freestream"),
+    "swirl_recovery": (str, "bounded", "unbounded"),
+    "limits": (bool,),
+    "tip_mach_limit": (str, "nodes", "design_point", "off"),
+    "allow_regeneration": (bool,),
     "wake_samples": (int, 1, 15),
+    "tol": (float, 1e-10, 1e-2),
 }
 
 
