@@ -21,7 +21,7 @@ import sys
 import traceback
 from pathlib import Path
 
-from .core.errors import InputError
+from .core.errors import InputError, parse_int
 
 _DISCIPLINE_CLIS = (
     "mdo.airfoil.cli",
@@ -75,8 +75,8 @@ def _cmd_run(args) -> int:
 
     if args.options:
         return _cmd_options(args)
-    if args.max_iter is not None and args.max_iter < 0:
-        raise InputError("--max-iter", f"must be >= 0, got {args.max_iter}")
+    if args.max_iter is not None:
+        args.max_iter = parse_int("--max-iter", args.max_iter, 0, 100000)
     options = dict(_parse_option(o) for o in (args.option or []))
     out = Path(args.out or default_out_dir(args.problem, analysis=args.analysis))
     check_out_dir(out, args.force)  # refuse before spending time on the build
@@ -142,7 +142,7 @@ def build_parser() -> argparse.ArgumentParser:
                          description="Solve a problem file and write its run folder.")
     run.add_argument("problem", help="path to a problem file, e.g. problems/ga2p.py")
     run.add_argument("--out", help="run folder (default results/<problem>/, or .../analysis/)")
-    run.add_argument("--max-iter", type=int, help="IPOPT iteration limit")
+    run.add_argument("--max-iter", metavar="N", help="IPOPT iteration limit, an integer in [0, 100000]")
     run.add_argument("--warm-start", metavar="FILE", help="solution.json of an earlier run")
     run.add_argument("--no-baseline", action="store_true",
                      help="optimize straight from the problem's initial guess (default for a problem with "

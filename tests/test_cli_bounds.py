@@ -57,6 +57,8 @@ CASES = {
                                    "--json"], ["--span: a number in [0.01, 1000] m, got '1e300'"]),
     "wing nspan 2.5": (lambda t: WING + ["--nspan", "2.5"], ["--nspan: an integer in [1, 200]"]),
     "wing sweep nan": (lambda t: WING + ["--sweep", "nan"], ["--sweep: a number in (-80, 80) deg"]),
+    "run max-iter": (lambda t: ["run", str(GA2P), "--max-iter", "1e12", "--out", str(t / "run")],
+                     ["--max-iter: an integer in [0, 100000], got '1e12'"]),
     "airfoil re 1e300": (lambda t: ["airfoil", "polar", "clarky", "--re", "1e300"],
                          ["--re: a number in [10000, 1e+08], got '1e300'"]),
     "airfoil alpha step 0": (lambda t: ["airfoil", "polar", "clarky", "--re", "1e6", "--alpha", "0", "10", "0"],
