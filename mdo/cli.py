@@ -5,19 +5,25 @@ sub-commands (``mdo rotor ...``, ``mdo wing ...``, ``mdo battery ...``) through 
 ``register(subparsers)`` function in their ``cli`` module, listed in
 ``_DISCIPLINE_CLIS``.
 
-Exit codes: 0 success, 1 a solve that did not converge (report printed, log and
-last iterate kept), 2 bad input (one line naming the field; ``--debug`` for the
-traceback), 141 output pipe closed by its reader (no traceback).
+Exit codes: 0 success, 1 a solve that did not converge or whose results could not
+be written (report printed, log and last iterate kept), 2 bad input or a
+file-system error before the solve (one line naming the field or path; ``--debug``
+for the traceback), 130 / 143 interrupted by SIGINT / SIGTERM (last iterate kept
+when a solve was running).  ``mdo check RUN_DIR``: 0 within limits, 1 a limit
+exceeded, 2 an unreadable folder; 141 output pipe closed by its reader (no traceback).
 ``mdo --version`` prints the version; ``mdo run FILE --options`` the problem's options.
 """
 from __future__ import annotations
 
 import argparse
+import contextlib
 import importlib
 import json
 import os
 import re
+import signal
 import sys
+import time
 import traceback
 from pathlib import Path
 
@@ -30,6 +36,7 @@ _DISCIPLINE_CLIS = (
     "mdo.wake.cli",
     "mdo.powertrain.cli",
     "mdo.plots.cli",
+    "mdo.sweep.cli",
 )
 
 
@@ -68,10 +75,33 @@ def _cmd_options(args) -> int:
     from .nlp.options import describe_options
     print(describe_options(args.problem))
     return 0
+class Terminated(KeyboardInterrupt):
+    """SIGTERM outside a solve (``timeout``, job schedulers): stop like Ctrl-C, exit 143."""
+
+
+def _on_sigterm(signum, frame):
+    raise Terminated
+
+
+class _Progress:
+    """'mdo: [  3.2 s] building ...' lines through the silent phases (stdout, flushed);
+    ``--quiet`` keeps only the one line per stage (``always=True``)."""
+
+    def __init__(self, quiet: bool):
+        self.quiet = quiet
+        self.t0 = time.perf_counter()
+
+    def __call__(self, text: str, always: bool = False):
+        if always or not self.quiet:
+            print(f"mdo: [{time.perf_counter() - self.t0:6.1f} s] {text}", flush=True)
 
 
 def _cmd_run(args) -> int:
-    from .nlp.run import check_out_dir, default_out_dir, load_problem_file
+    """``mdo run``: check the warm-start file, take the output folder (lock, staging
+    sibling, writable) before anything is built, solve the stage(s) into the staging
+    folder, move it into place (see ``mdo.nlp.run.RunFolder``)."""
+    from .nlp.problem import WarmStartError, read_solution
+    from .nlp.run import ResultWriteError, RunError, RunFolder, default_out_dir
 
     if args.options:
         return _cmd_options(args)
@@ -79,54 +109,109 @@ def _cmd_run(args) -> int:
         args.max_iter = parse_int("--max-iter", args.max_iter, 0, 100000)
     options = dict(_parse_option(o) for o in (args.option or []))
     out = Path(args.out or default_out_dir(args.problem, analysis=args.analysis))
-    check_out_dir(out, args.force)  # refuse before spending time on the build
+    ws_data = None
+    if args.warm_start is not None:   # validated before anything is created
+        try:
+            ws_data = read_solution(args.warm_start)
+        except WarmStartError as exc:
+            raise RunError(f"--{exc}") from exc
+    with contextlib.suppress(ValueError):
+        signal.signal(signal.SIGTERM, _on_sigterm)
+    folder = RunFolder(out, args.force).open()
+    try:
+        return _run_stages(args, options, folder, ws_data, _Progress(args.quiet))
+    except ResultWriteError:
+        folder.keep_incomplete()
+        raise
+    except KeyboardInterrupt:
+        folder.abort()
+        print(f"mdo: no solve was running; {out} was not touched", file=sys.stderr)
+        raise
+    except BaseException:
+        folder.abort()
+        raise
+
+
+def _run_stages(args, options, folder, ws_data, progress) -> int:
+    from .nlp.run import load_problem_file, load_warm_start
+
+    progress(f"building {args.problem}" + (" (design frozen)" if args.analysis else ""))
     problem = load_problem_file(args.problem, analysis=args.analysis, options=options)
-    warm_start = args.warm_start
+    progress(f"built {problem.name}: {problem.size()['variables']} variables, "
+             f"{problem.size()['constraints']} constraints")
+    if ws_data is not None:
+        ws = load_warm_start(problem, ws_data, partial=args.warm_start_partial)
+        print(f"mdo: warm start from {args.warm_start}: {ws.describe()}"
+              + ("; multipliers loaded (IPOPT warm_start_init_point)" if ws.multipliers else ""))
     # DESIGN rule 7, continuation: an optimization with design variables first flies the
     # baseline (design frozen) and starts from that converged mission
-    staged = (not args.analysis and warm_start is None and not args.no_baseline
+    staged = (not args.analysis and ws_data is None and not args.no_baseline
               and any(v.design and not v.frozen for v in problem.variables.values()))
     if staged:
-        base_out = out / "analysis"
-        check_out_dir(base_out, args.force)
+        progress(f"building {args.problem} (baseline: design frozen)")
         baseline = load_problem_file(args.problem, analysis=True, options=options)
-        code, _ = _solve_stage(baseline, base_out, args, None, "stage 1 of 2: baseline analysis, design frozen")
+        what = "stage 1 of 2: baseline analysis, design frozen"
+        code, sol = _solve_stage(baseline, folder.stage / "analysis", args, what, progress)
         del baseline
         if code != 0:
-            print(f"mdo: the baseline analysis did not converge, so the optimization was not started; "
-                  f"fix the baseline or pass --no-baseline", file=sys.stderr)
+            where = folder.commit(False, sol.status)
+            _final_report(sol, where, folder, code, what)
+            if code == 1:
+                print("mdo: the baseline analysis did not converge, so the optimization was not started; "
+                      "fix the baseline or pass --no-baseline", file=sys.stderr)
             return code
-        warm_start = base_out / "solution.json"
+        load_warm_start(problem, sol)
     what = "analysis, design frozen" if args.analysis else "optimization"
     if staged:
         what = f"stage 2 of 2: {what}, from the baseline"
-    code, _ = _solve_stage(problem, out, args, warm_start, what)
+    code, sol = _solve_stage(problem, folder.stage, args, what, progress)
+    where = folder.commit(sol.success, sol.status)
+    _final_report(sol, where, folder, code, what)
     return code
 
 
-def _solve_stage(problem, out, args, warm_start, what) -> tuple:
-    from .nlp.run import run_problem
+def _solve_stage(problem, stage_dir, args, what, progress) -> tuple:
+    """Solve one stage into ``stage_dir``; (exit code, Solution)."""
+    from .nlp.problem import INTERRUPT_STATUS
+    from .nlp.run import solve_into
 
     size = problem.size()
-    print(f"mdo: {problem.name} ({what}): {size['variables']} variables, {size['constraints']} constraints -> {out}")
-    sol = run_problem(problem, out, force=args.force, max_iter=args.max_iter,
-                      warm_start=warm_start, verbose=not args.quiet,
-                      solve_options={"hessian": args.hessian})
+    progress(f"{problem.name} ({what}): {size['variables']} variables, {size['constraints']} constraints",
+             always=True)
+    sol = solve_into(problem, stage_dir, max_iter=args.max_iter, verbose=not args.quiet,
+                     solve_options={"hessian": args.hessian}, progress=progress)
     print(f"\nmdo: {problem.name}: {sol.status} after {sol.iterations} iterations, "
           f"{sol.wall_time_s:.1f} s; {sol.objective_name} = {sol.objective:.6g} {sol.objective_unit}")
     for k, v in sol.summary_values().items():
         print(f"  {k} = {v}")
-    print(f"  results in {out}")
-    if sol.status == "Interrupted_By_User":
-        print(f"mdo: interrupted; log and last iterate kept in {out}", file=sys.stderr)
-        print(sol.violation_report(), file=sys.stderr)
-        return 130, sol
-    if not sol.success:
-        print(f"mdo: solve did not converge ({sol.status}); log and last iterate kept in {out}",
+    if sol.status in INTERRUPT_STATUS:
+        return INTERRUPT_STATUS[sol.status][1], sol
+    return (0 if sol.success else 1), sol
+
+
+def _final_report(sol, where, folder, code, what):
+    """Where the run went, and for a failure why (on stderr)."""
+    from .nlp.problem import INTERRUPT_STATUS
+
+    print(f"  results in {where}")
+    if folder.moved_aside is not None:
+        print(f"  the earlier run was moved to {folder.moved_aside}")
+    if code == 0:
+        return
+    if where != folder.out:
+        print(f"mdo: the earlier run in {folder.out} is kept; this one is in {where}", file=sys.stderr)
+    if sol.status in INTERRUPT_STATUS:
+        print(f"mdo: interrupted by {INTERRUPT_STATUS[sol.status][0]} during {what}; "
+              f"log and last iterate kept in {where}", file=sys.stderr)
+    else:
+        print(f"mdo: solve did not converge ({sol.status}); log and last iterate kept in {where}",
               file=sys.stderr)
-        print(sol.violation_report(), file=sys.stderr)
-        return 1, sol
-    return 0, sol
+    print(sol.violation_report(), file=sys.stderr)
+
+
+def _cmd_check(args) -> int:
+    from .nlp.check import check_run
+    return check_run(args.run_dir, tol=args.tol)
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -143,14 +228,21 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("problem", help="path to a problem file, e.g. problems/ga2p.py")
     run.add_argument("--out", help="run folder (default results/<problem>/, or .../analysis/)")
     run.add_argument("--max-iter", metavar="N", help="IPOPT iteration limit, an integer in [0, 100000]")
-    run.add_argument("--warm-start", metavar="FILE", help="solution.json of an earlier run")
+    run.add_argument("--warm-start", metavar="FILE",
+                     help="solution.json of an earlier run of the same problem (checked: problem name, "
+                          "variable names and sizes, finite values; multipliers used when it fits fully)")
+    run.add_argument("--warm-start-partial", action="store_true",
+                     help="accept a warm-start file that matches only some variables (the rest keep the "
+                          "problem's guess)")
     run.add_argument("--no-baseline", action="store_true",
                      help="optimize straight from the problem's initial guess (default for a problem with "
                           "design variables: first solve the baseline analysis into OUT/analysis, then "
                           "warm-start the optimization from it)")
     run.add_argument("--analysis", action="store_true",
                      help="freeze the design variables at their initial values; solve the mission only")
-    run.add_argument("--force", action="store_true", help="replace an existing run folder")
+    run.add_argument("--force", action="store_true",
+                     help="replace an existing run folder: once the new run is complete the old one is "
+                          "moved to OUT.old-<timestamp> (never deleted, never mixed)")
     run.add_argument("--option", "-o", action="append", metavar="KEY=VALUE",
                      help="keyword passed to build(); VALUE parsed as JSON when it can be, checked against "
                           "the option's type and range (list them with --options)")
@@ -160,6 +252,15 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("--hessian", choices=("exact", "limited-memory"), default="exact",
                      help="exact Hessian of the Lagrangian (default) or IPOPT's L-BFGS approximation")
     run.set_defaults(func=_cmd_run)
+
+    chk = sub.add_parser("check", help="check a run folder against its limits (exit 1 if one is exceeded)",
+                         description="Read RUN_DIR/solution.json and print, per constraint group and per "
+                                     "variable-bound group, the worst element and its margin.")
+    chk.add_argument("run_dir", help="a run folder written by mdo run")
+    chk.add_argument("--tol", type=float, default=None,
+                     help="allowed scaled violation (default 1e-4 = IPOPT's constr_viol_tol; a group's "
+                          "scaled violation is its violation divided by the group's scale)")
+    chk.set_defaults(func=_cmd_check)
 
     for modname in _DISCIPLINE_CLIS:
         try:
@@ -173,26 +274,51 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def main(argv=None) -> int:
+    code = _main(argv)
+    from .nlp.problem import FRAGILE
+    if FRAGILE and argv is None:
+        # CasADi segfaults destroying a solver that ended with Invalid_Option: every file is
+        # written and closed; leave without running the destructors so the exit code stays
+        sys.stdout.flush()
+        sys.stderr.flush()
+        os._exit(code)
+    return code
+
+
+def _main(argv=None) -> int:
     parser = build_parser()
     args = parser.parse_args(argv)
     if not getattr(args, "func", None):
         parser.print_help()
         return 2
-    from .nlp.run import RunError
+    from .nlp.run import ResultWriteError, RunError
     try:
         code = int(args.func(args) or 0)
         sys.stdout.flush()   # a closed pipe shows here, not as an error at interpreter exit
         return code
-    except BrokenPipeError:
+    except BrokenPipeError:   # before OSError, of which it is one
         return _closed_pipe()
-    except (InputError, RunError, FileNotFoundError) as exc:
+    except ResultWriteError as exc:   # the solve ran; its files could not be written
+        if args.debug:
+            traceback.print_exc()
+        print(f"mdo: error: {exc} (the solve had ended: {exc.solution.status}; an earlier run in the "
+              f"output folder is untouched)", file=sys.stderr)
+        return 1
+    except (InputError, RunError) as exc:
         if args.debug:
             traceback.print_exc()
         print(f"mdo: error: {exc}", file=sys.stderr)
         return 2
-    except KeyboardInterrupt:
-        print("mdo: interrupted", file=sys.stderr)
-        return 130
+    except OSError as exc:   # any file-system error left: one line naming the path
+        if args.debug:
+            traceback.print_exc()
+        where = f"{exc.filename}: " if exc.filename else ""
+        print(f"mdo: error: {where}{exc.strerror or exc}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt as exc:
+        sig, code = ("SIGTERM", 143) if isinstance(exc, Terminated) else ("SIGINT", 130)
+        print(f"mdo: interrupted by {sig}", file=sys.stderr)
+        return code
 
 
 def _closed_pipe() -> int:

@@ -17,7 +17,11 @@ def test_profile_gives_the_device_to_base_leg_and_final_approach_only():
     segs = {s.name: s for s in ga_segments(approach_drag_area_m2=0.4)}
     with_device = sorted(k for k, s in segs.items() if s.parameters.get("drag_device_area_m2", 0.0) > 0)
     assert with_device == ["BL", "FA"]
-    assert all(not s.parameters for s in ga_segments())  # default: none, as in the paper
+    # default of the profile builder: no device anywhere (flaps only on take-off and approach)
+    assert all("drag_device_area_m2" not in s.parameters for s in ga_segments())
+    flaps = {k: s.parameters.get("flap_deflection", 0.0) for k, s in segs.items()}
+    assert flaps == {"DER": 0.5, "ICA": 0.5, "CL": 0.0, "CR": 0.0, "D": 0.0, "DL": 0.0, "RCL": 0.0, "RCR": 0.0,
+                     "RD": 0.0, "BL": 0.5, "FA": 1.0}
     with pytest.raises(InputError, match="approach_drag_area_m2"):
         ga_segments(approach_drag_area_m2=-0.1)
 

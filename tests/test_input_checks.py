@@ -51,7 +51,7 @@ CASES = {
     "malformed CSV": (lambda t: sweep(geometry=_csv(t, "a,b\n1,2\n")), ["--geometry", "r_over_R,c_over_R,beta_deg"]),
     "not a CSV of numbers": (lambda t: sweep(geometry=_csv(t, "r_over_R,c_over_R,beta_deg\n0.2,x,30\n")),
                              ["--geometry"]),
-    "overlapping rotors": (lambda t: ["run", PROBLEMS / "overlapping_rotors.py"], ["span_eta", "overlap", "2 R"]),
+    "overlapping rotors": (lambda t: ["run", PROBLEMS / "overlapping_rotors.py"], ["span_eta", "overlap", "R1 + R2"]),
     "negative current": (lambda t: ["battery", "discharge", "--current", "-3"], ["--current", "(0, 12] A"]),
     "wing Mach >= 1": (lambda t: ["wing", "--span", "10", "--root-chord", "1", "--taper", "0.5", "--alpha", "2",
                                   "--mach", "1.2"], ["mach"]),

@@ -1,4 +1,5 @@
-"""Ctrl-C during a solve keeps the IPOPT log and the last iterate (exit 130)."""
+"""Ctrl-C and SIGTERM during a solve keep the IPOPT log and the last iterate (exit 130 / 143);
+an interrupt in the baseline stage is reported as an interrupt, not as a failed baseline."""
 import json
 import re
 import signal
@@ -9,26 +10,78 @@ from pathlib import Path
 
 import pytest
 
-PROBLEM = Path(__file__).parent / "problems" / "slow_dense.py"
+HERE = Path(__file__).parent
+PROBLEM = HERE / "problems" / "slow_dense.py"
+
+pytestmark = pytest.mark.skipif(sys.platform.startswith("win"), reason="POSIX signals")
 
 
-@pytest.mark.skipif(sys.platform.startswith("win"), reason="POSIX signals")
-def test_ctrl_c_keeps_log_and_last_iterate(tmp_path):
-    out = tmp_path / "run"
-    proc = subprocess.Popen([sys.executable, "-m", "mdo.cli", "run", str(PROBLEM), "--out", str(out), "--quiet"],
+def _start(*args):
+    return subprocess.Popen([sys.executable, "-m", "mdo.cli", "run", *map(str, args), "--quiet"],
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    log = out / "ipopt.log"
+
+
+def wait_iterating(out: Path, sub: str = "", timeout: float = 120):
+    """Wait until the run into ``out`` (written in its staging sibling) has logged 2 iterations."""
     t0 = time.time()
-    while time.time() - t0 < 120:          # wait until IPOPT is iterating
-        if log.exists() and len(re.findall(r"(?m)^\s+\d+\s+[-+]?\d\.\d+e", log.read_text(errors="replace"))) >= 2:
-            break
+    while time.time() - t0 < timeout:
+        for log in out.parent.glob(f"{out.name}.incomplete-*/{sub}ipopt.log"):
+            if len(re.findall(r"(?m)^\s+\d+\s+[-+]?\d\.\d+e", log.read_text(errors="replace"))) >= 2:
+                return log
         time.sleep(0.2)
+    raise AssertionError("IPOPT did not start iterating")
+
+
+# SIGTERM during a solve: tests/test_reliability_folders.py::test_lock_refuses_a_second_run_while_one_is_solving
+@pytest.mark.parametrize("sig,code,status", [(signal.SIGINT, 130, "Interrupted_By_User")])
+def test_signal_keeps_log_and_last_iterate(tmp_path, sig, code, status):
+    out = tmp_path / "run"
+    proc = _start(PROBLEM, "--out", out)
+    wait_iterating(out)
+    proc.send_signal(sig)
+    _, err = proc.communicate(timeout=120)
+    assert proc.returncode == code, err
+    assert f"interrupted by {signal.Signals(sig).name}" in err
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["status"] == status and summary["success"] is False
+    assert (out / "solution.json").exists() and (out / "ipopt.log").exists()
+    sol = json.loads((out / "solution.json").read_text())
+    assert len(sol["variables"][0]["value"]) == 400
+    assert not list(tmp_path.glob("run.incomplete-*")) and not (out / "INCOMPLETE.txt").exists()
+
+
+def test_interrupt_in_the_baseline_stage_says_so(tmp_path):
+    # slow_dense with a design variable: `mdo run` first solves the (slow) baseline analysis
+    f = tmp_path / "staged.py"
+    f.write_text(f"import sys\nsys.path.insert(0, {str(HERE / 'problems')!r})\n"
+                 "from slow_dense import build as _build\n\n"
+                 "def build(analysis=False):\n    p = _build()\n"
+                 "    p.variable('d', lower=0, upper=1, init=0.5, design=True)\n    return p\n")
+    out = tmp_path / "run"
+    proc = _start(f, "--out", out)
+    wait_iterating(out, "analysis/")
     proc.send_signal(signal.SIGINT)
     _, err = proc.communicate(timeout=120)
     assert proc.returncode == 130, err
-    assert "interrupted" in err
-    summary = json.loads((out / "summary.json").read_text())
-    assert summary["status"] == "Interrupted_By_User" and summary["success"] is False
-    assert (out / "solution.json").exists() and log.exists()
-    sol = json.loads((out / "solution.json").read_text())
-    assert len(sol["variables"][0]["value"]) == 400
+    assert "interrupted by SIGINT during stage 1 of 2" in err
+    assert "did not converge" not in err and "fix the baseline" not in err
+    assert json.loads((out / "analysis" / "summary.json").read_text())["status"] == "Interrupted_By_User"
+    assert not (out / "summary.json").exists()   # the optimization never started
+
+
+@pytest.mark.parametrize("sig,code", [(signal.SIGINT, 130), (signal.SIGTERM, 143)])
+def test_signal_while_building_leaves_nothing(tmp_path, sig, code):
+    f = tmp_path / "slow_build.py"
+    f.write_text("import time\n\ndef build():\n    time.sleep(60)\n")
+    out = tmp_path / "new" / "run"
+    proc = subprocess.Popen([sys.executable, "-m", "mdo.cli", "run", str(f), "--out", str(out)],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    t0 = time.time()
+    while not list(tmp_path.glob("new/run.incomplete-*")) and time.time() - t0 < 60:
+        time.sleep(0.1)
+    time.sleep(0.5)
+    proc.send_signal(sig)
+    _, err = proc.communicate(timeout=60)
+    assert proc.returncode == code, err
+    assert f"interrupted by {signal.Signals(sig).name}" in err and "no solve was running" in err
+    assert "Traceback" not in err and not (tmp_path / "new").exists()

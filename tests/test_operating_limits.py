@@ -109,4 +109,4 @@ def test_limits_violated_when_off_respected_when_on():
     P_r, P_max, _ = results[False]
     assert P_max > 2 * P_r                    # violated by far when off
     P_r, P_max, i_cell = results[True]
-    assert P_max <= P_r * (1 + 1e-6) and np.all(i_cell >= -1e-9) and np.all(i_cell <= 8.0 + 1e-6)
+    assert P_max <= P_r * (1 + 1e-6) and np.all(i_cell >= -1e-9) and np.all(i_cell <= 10.0 + 1e-6)

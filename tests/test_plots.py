@@ -35,8 +35,8 @@ import pytest  # noqa: E402
 
 MISSION = "time_s,altitude_m,speed_mps,segment\n" + "".join(
     f"{60 * i},{100 * i},{50 + i},{'CL' if i < 5 else 'CR'}\n" for i in range(10))
-LOADING = "surface,y_m,cl_props_on,cl_props_off\n" + "".join(
-    f"main_wing,{0.5 * i},{0.5 + 0.01 * i},{0.5}\n" for i in range(8))
+LOADING = "surface,y_m,cl_props_on,cl_props_off,ccl_over_cref,chord_m\n" + "".join(
+    f"main_wing,{0.5 * i},{0.5 + 0.01 * i},{0.5},{0.5},{1.5}\n" for i in range(8))
 BLADE = "r_over_R,c_over_R,beta_deg\n0.2,0.1,40\n0.6,0.08,25\n1.0,0.04,12\n"
 
 
@@ -62,7 +62,7 @@ DAMAGE = {
     "binary loading": ("loading.csv", _binary, "binary"),
     "huge loading": ("loading.csv", _huge, "read limit"),
     "loading without columns": ("loading.csv", lambda p: p.write_text("surface,y_m\nmain_wing,1\n"),
-                                "column 'cl_props_on' missing"),
+                                "column 'ccl_over_cref' missing"),
     "loading header only": ("loading.csv", lambda p: p.write_text("surface,y_m,cl_props_on,cl_props_off\n"),
                             "no rows"),
     "text in numbers": ("loading.csv", lambda p: p.write_text("surface,y_m,cl_props_on,cl_props_off\nw,a,b,c\n"),
@@ -122,3 +122,176 @@ def test_usable_input_never_opens_a_fifo(tmp_path):
     assert usable_input(tmp_path / "absent") == "missing"
     (tmp_path / "ok.csv").write_text("a,b\n1,2\n")
     assert usable_input(tmp_path / "ok.csv") is None
+
+
+# ---------------------------------------------------------------- issue 23: what a designer sees
+import json  # noqa: E402
+import shutil  # noqa: E402
+from pathlib import Path  # noqa: E402
+
+import numpy as np  # noqa: E402
+import pytest  # noqa: E402
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def _capture(monkeypatch):
+    """Record every figure's axes labels, titles and x ticks when it is saved."""
+    import matplotlib.figure
+    seen = []
+    orig = matplotlib.figure.Figure.savefig
+
+    def save(fig, *a, **k):
+        fig.canvas.draw()
+        seen.append({"ylabels": [ax.get_ylabel() for ax in fig.axes], "xlabels": [ax.get_xlabel() for ax in fig.axes],
+                     "title": fig._suptitle.get_text() if fig._suptitle else fig.axes[0].get_title(),
+                     "xticks": [list(ax.get_xticks()) for ax in fig.axes],
+                     "lines": [[ln.get_ydata() for ln in ax.get_lines()] for ax in fig.axes]})
+        return orig(fig, *a, **k)
+    monkeypatch.setattr(matplotlib.figure.Figure, "savefig", save)
+    return seen
+
+
+def test_convergence_csv_is_the_log(tmp_path):
+    """One source: convergence.csv holds the numbers of ipopt.log's iteration lines (GA-2P: 8.17e-04
+    at iteration 1, where the intermediate callback said 0.00715)."""
+    from mdo.plots.convergence import write_convergence_csv
+    from mdo.plots.figures import read_csv
+    log = ROOT / "results" / "ga2p" / "ipopt.log"
+    n = write_convergence_csv(log, tmp_path / "c.csv")
+    c = read_csv(tmp_path / "c.csv")
+    h = parse_ipopt_log(log)
+    iters = json.loads((ROOT / "results" / "ga2p" / "summary.json").read_text())["iterations"]
+    assert n == iters + 1 and c["iter"].tolist() == list(range(iters + 1))
+    assert np.array_equal(c["inf_pr"], h["inf_pr"]) and np.array_equal(c["objective"], h["objective"])
+    sol = run_problem(load_problem_file(BRACH), tmp_path / "run", verbose=False)
+    h = parse_ipopt_log(tmp_path / "run" / "ipopt.log")
+    c = read_csv(tmp_path / "run" / "convergence.csv")
+    assert c["iter"].size == sol.iterations + 1
+    assert np.array_equal(c["inf_pr"], h["inf_pr"]) and np.array_equal(c["inf_du"], h["inf_du"])
+
+
+def test_undefined_ratios_are_nan():
+    from mdo.plots.units import defined_ratio
+    r = defined_ratio([0.9, -0.165, 0.2, 0.0, 1.0], [1.0, -0.128, -0.1, 1.0, 0.0])
+    assert r[0] == pytest.approx(0.9) and np.isnan(r[1:]).all()
+
+
+def test_propulsive_efficiency_blank_when_windmilling():
+    from mdo.plots.figures import propulsive_efficiency, read_csv
+    d = read_csv(ROOT / "results" / "ga2p" / "mission.csv")
+    eta = propulsive_efficiency(d)
+    bl = np.array([s == "BL" for s in d["segment"]])
+    assert np.isnan(eta[bl & (d["thrust_N"] < 0)]).all() and (bl & (d["thrust_N"] < 0)).any()
+    assert (np.nanmax(eta) <= 1.0) and (np.nanmin(eta) > 0.0)   # 1.43 in the old figure
+    assert np.isfinite(eta[[s == "CR" for s in d["segment"]]]).all()
+
+
+def test_energy_table_efficiency_cells():
+    from mdo.vehicle.reports import _efficiency
+    assert _efficiency(-0.128, -0.085) == "—"     # GA-2P base leg: printed 1.510 before
+    assert _efficiency(-0.165, -0.128) == "—"
+    assert _efficiency(-0.05, 0.06) == "—"        # -0.850 with the approach drag device
+    assert _efficiency(0.12, 0.10) == "—"         # > 1: a segment mixing forward and backward flow
+    assert _efficiency(0.166, 0.215) == "0.772"
+
+
+@pytest.mark.parametrize("units,length,speed,force", [("si", "(m)", "(m/s)", "(kN)"),
+                                                      ("aviation", "(ft)", "(kt)", "(lbf)")])
+def test_unit_option_labels_every_axis(monkeypatch, tmp_path, units, length, speed, force):
+    from mdo.plots.figures import plot_loading, plot_mission, plot_rotor
+    from mdo.plots.geometry import plot_geometry, plot_planform
+    run = ROOT / "results" / "ga2p"
+    seen = _capture(monkeypatch)
+    plot_mission(run / "mission.csv", tmp_path / "m.png", units=units)
+    plot_rotor(run, tmp_path / "r.png", units=units)
+    plot_loading(run / "loading.csv", tmp_path / "l.png", baseline=run / "analysis" / "loading.csv", units=units)
+    plot_geometry(run / "geometry.json", tmp_path / "g.png", units=units)
+    plot_planform(run / "geometry.json", tmp_path / "p.png", baseline=run / "analysis" / "geometry.json",
+                  units=units)
+    mission, rotor, loading, geometry, planform = seen
+    assert mission["ylabels"][:2] == [f"altitude {length}", f"airspeed {speed}"]
+    assert mission["ylabels"][2] == "power (kW)"
+    assert any(force in y for y in rotor["ylabels"]) and "rotor speed (rpm)" in rotor["ylabels"]
+    other = ("(m)", "(ft)", "(m/s)", "(kt)", "(kN)", "(lbf)", "(mph)")
+    for fig in seen:
+        labels = [x for x in fig["ylabels"] + fig["xlabels"]]
+        assert all(lab for lab in fig["ylabels"]), fig   # every axis labelled
+        assert not any(u in lab for lab in labels for u in other if u not in (length, speed, force)), labels
+    assert "ga2p, optimum" in mission["title"] and "(ga2p)" not in mission["title"]
+    assert all(lab.startswith("c·cl / c_ref") for lab in loading["ylabels"])
+
+
+def test_bad_units_is_a_clear_error(tmp_path):
+    from mdo.core.errors import InputError
+    from mdo.plots.units import unit_system
+    with pytest.raises(InputError, match="units: got 'imperial'; allowed: si, aviation"):
+        unit_system("imperial")
+    r = subprocess.run([sys.executable, "-m", "mdo.cli", "plot", str(ROOT / "results" / "ga2p"), "--units",
+                        "imperial"], capture_output=True, text=True)
+    assert r.returncode == 2 and "--units" in r.stderr
+
+
+def test_integer_ticks_and_problem_title(monkeypatch, tmp_path):
+    from mdo.plots.convergence import plot_convergence
+    run = tmp_path / "analysis"
+    shutil.copytree(ROOT / "results" / "ga2p" / "analysis", run)
+    seen = _capture(monkeypatch)
+    plot_convergence(run / "ipopt.log", tmp_path / "c.png")   # 3 iterations
+    ticks = [t for t in seen[0]["xticks"][1] if 0 <= t <= 3]
+    assert ticks and all(float(t).is_integer() for t in ticks)
+    assert seen[0]["title"] == "IPOPT convergence: ga2p, baseline design (analysis)"
+
+
+def test_loading_marks_propellers_on_their_wing():
+    from mdo.plots.geometry import read_geometry, rotor_surfaces
+    for name, wing in (("ga2p", "main_wing"), ("ttw", None)):
+        g = read_geometry(ROOT / "results" / name / "geometry.json")
+        rs = rotor_surfaces(g)
+        assert rs and all(s is not None for s, _, _ in rs)
+        if wing:
+            assert {s for s, _, _ in rs} == {wing}
+    ttw = rotor_surfaces(read_geometry(ROOT / "results" / "ttw" / "geometry.json"))
+    assert {s for s, _, _ in ttw} == {"main_wing", "tandem_wing"}   # two rotors on each tandem wing half
+
+
+def test_design_checks_flag_thin_blade(tmp_path):
+    from mdo.plots.checks import design_checks, write_design_checks
+    run = tmp_path / "ga2p"
+    shutil.copytree(ROOT / "results" / "ga2p", run)
+    # a slender blade: the committed blade with its chords scaled to c/R 0.03 at 0.75 R
+    rows = (run / "blade.csv").read_text().splitlines()
+    head, data = rows[0], [r.split(",") for r in rows[1:]]
+    r_R = np.array([float(d[0]) for d in data])
+    c_R = np.array([float(d[1]) for d in data])
+    c_R *= 0.03 / np.interp(0.75, r_R, c_R)
+    (run / "blade.csv").write_text("\n".join([head] + [f"{d[0]},{c:.5f},{d[2]}" for d, c in zip(data, c_R)]) + "\n")
+    checks = {c["quantity"]: c for c in design_checks(run)}
+    c = checks["blade chord c/R at 0.75 R"]
+    assert not c["ok"] and c["value"] == pytest.approx(0.03, rel=1e-3)
+    W = json.loads((run / "summary.json").read_text())["togw_kg"] * 9.80665 / 14.76
+    assert checks["wing loading W/S"]["ok"] and checks["wing loading W/S"]["value"] == pytest.approx(W, rel=1e-3)
+    write_design_checks(run)
+    once = (run / "summary.md").read_text()
+    write_design_checks(run)
+    assert (run / "summary.md").read_text() == once and once.count("## Design checks") == 1
+    s = json.loads((run / "summary.json").read_text())
+    assert any("blade chord" in w for w in s["design_warnings"])
+    # a blade inside usual practice is not flagged
+    b = (run / "blade.csv").read_text().splitlines()
+    rows = [b[0]] + [f"{r.split(',')[0]},0.12,{r.split(',')[2]}" for r in b[1:]]
+    (run / "blade.csv").write_text("\n".join(rows) + "\n")
+    assert {c["quantity"]: c for c in design_checks(run)}["blade chord c/R at 0.75 R"]["ok"]
+
+
+def test_mdo_plot_redraws_geometry_and_planform(tmp_path):
+    run = tmp_path / "ga2p"
+    shutil.copytree(ROOT / "results" / "ga2p", run)
+    for f in ("geometry.png", "planform.png", "report.html", "convergence.csv"):
+        (run / f).unlink(missing_ok=True)
+    r = subprocess.run([sys.executable, "-m", "mdo.cli", "plot", str(run), "--units", "aviation"],
+                       capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    for f in ("geometry.png", "planform.png", "report.html", "convergence.csv", "mission.png", "loading.png",
+              "rotor.png"):
+        assert (run / f).exists() and (run / f).stat().st_size > (500 if f.endswith(".csv") else 5_000), f

@@ -118,3 +118,17 @@ def test_geometry_checks_in_python():
 def test_parse_range_includes_stop():
     np.testing.assert_allclose(parse_range("0:2:0.05")[[0, -1]], [0.0, 2.0])
     assert parse_range("0.3:0.3:0.1").size == 1
+
+
+def test_sweep_accepts_a_radial_distribution_and_stall_delay(capsys):
+    i = SWEEP.index("--airfoil")
+    argv = SWEEP[:i + 1] + ["naca4412:0.4:clark_y:0.8:e63+du_selig"] + SWEEP[i + 2:]
+    code, out, err = _run(argv, capsys)
+    assert code == 0, err
+    assert len(out.strip().splitlines()) == 6
+
+
+def test_sweep_unknown_section_in_distribution_exits_2(capsys):
+    i = SWEEP.index("--airfoil")
+    code, out, err = _run(SWEEP[:i + 1] + ["naca4412:0.4:nosuch"] + SWEEP[i + 2:], capsys)
+    assert code == 2 and "airfoil" in err

@@ -1,6 +1,7 @@
 """``Airfoil``: section cl, cd, cm at any alpha, Re, M for numbers and CasADi symbols."""
 from __future__ import annotations
 
+import re
 from functools import lru_cache
 
 import casadi as ca
@@ -48,6 +49,8 @@ class Airfoil:
         self._function = None
         self._maps = {}
         self._alpha0 = {}
+        self.coordinate_path = None   # set by the loaders
+        self.spec = None              # SectionSpec of a generated section
 
     def __repr__(self):
         lo, hi = self.reynolds_range
@@ -60,9 +63,36 @@ class Airfoil:
         """The shipped airfoil ``name`` (case, spaces, '-' and '_' ignored); see :func:`available`."""
         key = normalize(name)
         entry = CATALOG.get(key)
-        if entry is None or not entry.shipped:
-            raise InputError("airfoil", f"unknown airfoil {name!r}; available: {', '.join(available())}")
-        return _load(key)
+        if entry is not None and entry.shipped and "@" not in str(name):
+            return _load(key)
+        return cls.from_spec(name)
+
+    @classmethod
+    def from_spec(cls, spec) -> "Airfoil":
+        """A generated section (``mdo.airfoil.generate``): a ``SectionSpec`` or its text form,
+        e.g. ``"NACA 23012"``, ``"naca4412@ncrit=5"``, ``"clarky@xtr=0.1"`` (a shipped
+        section's coordinates with another transition setting), ``"my.dat@ncrit=7"``.
+        Polars come from NeuralFoil (cached); the fit and model are the shipped ones."""
+        from .generate import SectionSpec, parse_spec
+        if not isinstance(spec, SectionSpec):
+            text = str(spec)
+            geom = text.split("@", 1)[0]
+            entry = CATALOG.get(normalize(geom))
+            if entry is not None and entry.shipped and not re.fullmatch(r"naca\d{4,5}", normalize(geom)):
+                # a shipped section with another transition setting: its own coordinates
+                from .data_io import read_coordinates
+                _, up, lo = read_coordinates(entry.coordinate_path)
+                opts = parse_spec("naca0012" + (text[len(geom):] if "@" in text else ""))
+                spec = SectionSpec(coordinates=tuple(map(tuple, np.vstack([up[::-1], lo[1:]]).round(7))),
+                                   ncrit=opts.ncrit, xtr_upper=opts.xtr_upper, xtr_lower=opts.xtr_lower,
+                                   title=entry.title)
+            else:
+                try:
+                    spec = parse_spec(text)
+                except InputError as exc:
+                    raise InputError("airfoil", f"unknown airfoil {text!r}; available: {', '.join(available())}, "
+                                                f"a NACA 4/5-digit code or a coordinate file ({exc.args[-1]})") from exc
+        return _load_spec(spec)
 
     # ------------------------------------------------------------------ evaluation
     def coefficients(self, alpha_rad, reynolds, mach=0.0):
@@ -141,7 +171,7 @@ class Airfoil:
 
     def camber_line(self, x_over_c):
         """``(z/c, dz/dx)`` of the mean line at chord stations ``x/c`` (from the coordinates)."""
-        return camber_line(CATALOG[self.key].coordinate_path, x_over_c)
+        return camber_line(self.coordinate_path, x_over_c)
 
     def best_lift_to_drag(self, reynolds: float = REFERENCE_REYNOLDS, mach: float = 0.0):
         """``(alpha_rad, cl, cd)`` at the maximum of cl/cd (a design point for Adkins-Liebeck)."""
@@ -197,10 +227,32 @@ def _broadcast_columns(args, kind):
     return shape, n, cols
 
 
+_GENERATED: dict = {}
+
+
+def _load_spec(spec) -> Airfoil:
+    """Generate (or read cached) polars of ``spec``, fit them like the shipped ones."""
+    from .generate import generate_polars
+    if spec.key in _GENERATED:
+        return _GENERATED[spec.key]
+    paths = generate_polars(spec)
+    polars = sorted((read_polar(p) for p in paths), key=lambda p: p.reynolds)
+    coords = paths[0].parent / f"{spec.key}_coordinates.txt"
+    tc, _, camber = thickness_camber(coords)
+    tables = fit_tables(spec.key, polars, FitSettings())
+    af = Airfoil(spec.key, spec.title or spec.key, tables, tc, camber, polars)
+    af.coordinate_path = coords
+    af.spec = spec
+    _GENERATED[spec.key] = af
+    return af
+
+
 @lru_cache(maxsize=None)
 def _load(key: str) -> Airfoil:
     entry = CATALOG[key]
     polars = sorted((read_polar(p) for p in entry.polar_paths()), key=lambda p: p.reynolds)
     tc, _, camber = thickness_camber(entry.coordinate_path)
     tables = fit_tables(key, polars, FitSettings())
-    return Airfoil(key, entry.title, tables, tc, camber, polars)
+    af = Airfoil(key, entry.title, tables, tc, camber, polars)
+    af.coordinate_path = entry.coordinate_path
+    return af

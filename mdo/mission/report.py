@@ -14,7 +14,7 @@ from pathlib import Path
 import casadi as ca
 import numpy as np
 
-from ..core.units import FT, KWH, MINUTE, MPH
+from ..core.units import KWH
 
 __all__ = ["write_mission_report", "mission_table"]
 
@@ -62,58 +62,6 @@ def write_mission_report(mission, solution, out_dir):
             w.writerow([g.segment.name, g.segment.kind, g.n, f"{t[a]:.6g}", f"{t[b] - t[a]:.6g}",
                         f"{g.kin.altitude_m[0]:.6g}", f"{g.kin.altitude_m[-1]:.6g}", f"{g.kin.speed_mps[0]:.6g}",
                         f"{g.kin.speed_mps[-1]:.6g}", f"{e_seg[i] / KWH:.12g}"])
-    _plot(mission, names, vals, out / "mission.png", solution)
+    from ..plots.figures import plot_mission   # the figure is drawn from the file, as by ``mdo plot``
+    plot_mission(path, out / "mission.png")
     return path
-
-
-def _plot(mission, names, vals, path, solution):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    col = {n: vals[:, i] for i, n in enumerate(names)}
-    t = col["time_s"] / MINUTE
-    fig, ax = plt.subplots(2, 2, figsize=(12, 7.5), sharex=True)
-    segs = mission._segs
-
-    def by_segment(a, y, **kw):
-        for i, g in enumerate(segs):
-            sl = slice(g.node0, g.node0 + g.n)
-            a.plot(t[sl], y[sl], ".-", color=f"C{i % 10}", ms=3, lw=1.2, **kw)
-
-    by_segment(ax[0, 0], col["altitude_m"] / FT)
-    ax[0, 0].set_ylabel("altitude (ft)")
-    by_segment(ax[0, 1], col["speed_mps"] / MPH)
-    ax[0, 1].set_ylabel("airspeed (mph)")
-    if "battery_power_W" in col:
-        by_segment(ax[1, 0], col["battery_power_W"] / 1e3)
-        if "shaft_power_W" in col:
-            ax[1, 0].plot(t, col["shaft_power_W"] / 1e3, "k:", lw=0.8, label="shaft")
-            ax[1, 0].plot([], [], "C0.-", label="battery")
-            ax[1, 0].legend(loc="best", fontsize=8)
-    ax[1, 0].set_ylabel("power (kW)")
-    if "state_of_charge" in col:
-        by_segment(ax[1, 1], col["state_of_charge"])
-        ax[1, 1].set_ylabel("state of charge (-)")
-    else:
-        e_name = next((n for n in names if "energy" in n), None)
-        if e_name is not None:
-            by_segment(ax[1, 1], col[e_name] / KWH)
-            ax[1, 1].set_ylabel(f"{e_name} (kWh)")
-    for a in ax.ravel():
-        for g in segs[1:]:
-            a.axvline(t[g.node0], color="0.8", lw=0.6, zorder=0)
-        a.grid(alpha=0.3)
-    for a in ax[1]:
-        a.set_xlabel("time (min)")
-    lo, top = ax[0, 0].get_ylim()
-    for i, g in enumerate(segs):   # staggered so that short segments do not overwrite each other
-        y = top - (0.0 if i % 2 == 0 else 0.09 * (top - lo))
-        ax[0, 0].text(t[g.node0], y, " " + g.segment.name, rotation=90, va="top", ha="left", fontsize=7,
-                      color=f"C{i % 10}")
-    energy = float(np.asarray(solution.value(mission.energy_used_J))) / KWH
-    fig.suptitle(f"{mission.name}: {mission.vehicle.name}, battery energy {energy:.3f} kWh, "
-                 f"{t[-1]:.1f} min", fontsize=11)
-    fig.tight_layout()
-    fig.savefig(path, dpi=120)
-    plt.close(fig)

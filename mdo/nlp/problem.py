@@ -33,7 +33,27 @@ import numpy as np
 
 from ..core.errors import InputError
 
-__all__ = ["Problem", "Variable", "ConstraintGroup", "Solution", "SolveError"]
+__all__ = ["Problem", "Variable", "ConstraintGroup", "Solution", "SolveError", "WarmStartError",
+           "WarmStart", "INTERRUPT_STATUS"]
+
+# status of a solve stopped by a signal -> (signal name, conventional exit code 128 + signum)
+INTERRUPT_STATUS = {"Interrupted_By_User": ("SIGINT", 130), "Terminated_By_Signal": ("SIGTERM", 143)}
+
+# IPOPT statuses after which CasADi 3.6-3.8 crashes (SIGSEGV) when the solver is destroyed
+# at interpreter exit; the CLI then leaves with os._exit once its files are flushed
+CRASH_ON_EXIT_STATUS = {"Invalid_Option"}
+FRAGILE = []   # Opti objects whose solve ended so: kept alive until os._exit
+
+# an inequality element whose scaled slack is at most this is "active" (IPOPT ends with
+# slacks of order mu ~ tol = 1e-6 on the scaled problem, so 1e-5 separates at-the-limit
+# from clear of it)
+ACTIVE_SLACK = 1e-5
+# a design variable within this fraction of its bound is reported as bound-limited (#16 item 5)
+DESIGN_BOUND_FRACTION = 0.01
+
+
+class WarmStartError(InputError):
+    """A warm-start file that does not fit the problem (name, variables, sizes, values)."""
 
 
 class SolveError(RuntimeError):
@@ -59,6 +79,7 @@ class Variable:
     frozen: bool = False
     description: str = ""
     labels: list | None = None
+    bound_con: object = None   # the Opti ``bounded`` constraint (its dual is IPOPT's lam_x)
 
     @property
     def size(self) -> int:
@@ -74,6 +95,9 @@ class ConstraintGroup:
     unit: str
     labels: list
     size: int
+    lhs: object = None      # expr (model units); values flattened column-major like the residual
+    rhs: object = None      # rhs (number, array or expression)
+    con: object = None      # the Opti constraint (its dual is IPOPT's lam_g)
 
 
 @dataclass
@@ -103,6 +127,124 @@ def _shape(shape) -> tuple:
     if len(shape) != 2:
         raise ValueError("variables are vectors or matrices (CasADi is 2-D)")
     return shape
+
+
+WARM_START_OPTIONS = {
+    "warm_start_init_point": "yes",
+    "warm_start_bound_push": 1e-9,
+    "warm_start_bound_frac": 1e-9,
+    "warm_start_slack_bound_push": 1e-9,
+    "warm_start_slack_bound_frac": 1e-9,
+    "warm_start_mult_bound_push": 1e-9,
+    "mu_init": 1e-9,
+}
+
+
+def _outcome(stats: dict, max_iter: int, signum):
+    """(history, status, success, iterations) from IPOPT's stats and the signal caught."""
+    history = {"iter": [], "objective": [], "inf_pr": [], "inf_du": []}
+    it = stats.get("iterations", {})
+    if it:
+        history["objective"] = [float(v) for v in it.get("obj", [])]
+        history["inf_pr"] = [float(v) for v in it.get("inf_pr", [])]
+        history["inf_du"] = [float(v) for v in it.get("inf_du", [])]
+        history["iter"] = list(range(len(history["objective"])))
+    if signum is None:
+        status = stats.get("return_status", "unknown")
+    else:
+        status = "Terminated_By_Signal" if signum == signal.SIGTERM else "Interrupted_By_User"
+    success = bool(stats.get("success", False)) and signum is None
+    n_iter = int(stats.get("iter_count", 0))
+    if not (0 <= n_iter <= max_iter):
+        # IPOPT aborted (interrupt, exception): its counter is not set; use what was logged
+        n_iter = max(len(history["objective"]) - 1, 0)
+    return history, status, success, n_iter
+
+
+@contextlib.contextmanager
+def _signals_as_interrupts():
+    """SIGINT and SIGTERM raise KeyboardInterrupt while IPOPT runs (CasADi checks for a
+    pending Python exception in its iteration callback and stops with the last iterate);
+    yields a dict whose ``"signal"`` says which one came."""
+    caught: dict = {}
+
+    def handler(signum, frame):
+        caught["signal"] = signum
+        raise KeyboardInterrupt
+
+    previous = {}
+    for sig in (signal.SIGINT, signal.SIGTERM):
+        with contextlib.suppress(ValueError, OSError):  # not in the main thread: leave handlers alone
+            previous[sig] = signal.signal(sig, handler)
+    try:
+        yield caught
+    finally:
+        for sig, h in previous.items():
+            signal.signal(sig, h)
+
+
+@dataclass
+class WarmStart:
+    """What a warm start used: ``len(ws)`` variables of ``ws.total``."""
+
+    source_problem: object
+    problem: str
+    total: int
+    used: list = field(default_factory=list)
+    missing: list = field(default_factory=list)     # problem variables the file lacks
+    extra: list = field(default_factory=list)       # file variables the problem lacks
+    bad: list = field(default_factory=list)         # "name has 20 values, expected 30", non-finite
+    problems: list = field(default_factory=list)    # whole-file mismatches (problem name)
+    values: dict = field(default_factory=dict, repr=False)
+    same_mode: bool = True
+    multipliers: bool = False
+
+    def __len__(self) -> int:
+        return len(self.used)
+
+    def __iter__(self):
+        return iter(self.used)
+
+    @property
+    def complete(self) -> bool:
+        return not (self.missing or self.extra or self.bad or self.problems)
+
+    def describe(self) -> str:
+        """One line: how much of the file fits and, if not all, why (first reasons)."""
+        text = f"{len(self.used)} of {self.total} variables match"
+        why = list(self.problems) + self.bad[:3]
+        if self.missing:
+            why.append(f"{len(self.missing)} variable(s) missing from the file, e.g. {self.missing[0]!r}")
+        if self.extra:
+            why.append(f"{len(self.extra)} variable(s) not in this problem, e.g. {self.extra[0]!r}")
+        return text + (" (" + "; ".join(why) + ")" if why else "")
+
+
+def read_solution(source) -> dict:
+    """A solution dict from a ``Solution``, a dict or a ``solution.json`` path, checked
+    for the structure a warm start needs (``WarmStartError`` names the file otherwise)."""
+    if isinstance(source, Solution):
+        return source.to_dict()
+    where = "warm start"
+    if isinstance(source, (str, os.PathLike)):
+        where = f"warm start {source}"
+        try:
+            with open(source, "rb") as f:
+                raw = f.read(512 * 1024 * 1024 + 1)   # a solution.json is MBs; do not read without bound
+            if len(raw) > 512 * 1024 * 1024:
+                raise WarmStartError(where, "file larger than 512 MiB, not a solution.json")
+            data = json.loads(raw.decode("utf-8"))
+        except WarmStartError:
+            raise
+        except OSError as exc:
+            raise WarmStartError(where, f"cannot read ({exc.strerror or exc})") from exc
+        except (UnicodeDecodeError, ValueError) as exc:
+            raise WarmStartError(where, f"not a solution.json (invalid JSON: {exc})") from exc
+    else:
+        data = source
+    if not isinstance(data, dict) or not isinstance(data.get("variables"), list):
+        raise WarmStartError(where, "not a solution.json (no 'variables' list)")
+    return data
 
 
 class Problem:
@@ -164,13 +306,16 @@ class Problem:
         X = self.opti.variable(*shp)
         expr = X * ca.DM(scale) if shp != (1, 1) else X * float(scale[0, 0])
         lo_s, up_s = lower / scale, upper / scale
+        bound_con = None
         if np.any(np.isfinite(lo_s)) or np.any(np.isfinite(up_s)):
             lo_s = np.where(np.isfinite(lo_s), lo_s, -np.inf)
             up_s = np.where(np.isfinite(up_s), up_s, np.inf)
-            self.opti.subject_to(self.opti.bounded(ca.DM(lo_s), X, ca.DM(up_s)))
+            bound_con = self.opti.bounded(ca.DM(lo_s), X, ca.DM(up_s))
+            self.opti.subject_to(bound_con)
         self.opti.set_initial(X, ca.DM(init / scale))
         var = Variable(name, shp, unit, scale, lower, upper, init, X, expr, design=design,
-                       description=description, labels=list(labels) if labels else None)
+                       description=description, labels=list(labels) if labels else None,
+                       bound_con=bound_con)
         self.variables[name] = var
         return expr
 
@@ -195,18 +340,15 @@ class Problem:
         n = int(r.numel())
         if n == 0:
             return
-        if kind == "==":
-            self.opti.subject_to(r == 0)
-        elif kind == "<=":
-            self.opti.subject_to(r <= 0)
-        else:
-            self.opti.subject_to(r >= 0)
+        con = (r == 0) if kind == "==" else (r <= 0) if kind == "<=" else (r >= 0)
+        self.opti.subject_to(con)
         if labels is None:
             labels = [f"{name}[{i}]" for i in range(n)]
         labels = list(labels)
         if len(labels) != n:
             raise InputError(f"constraint {name!r} labels", f"{len(labels)} labels for {n} elements")
-        self.groups[name] = ConstraintGroup(name, kind, r, float(scale), unit, labels, n)
+        self.groups[name] = ConstraintGroup(name, kind, r, float(scale), unit, labels, n,
+                                            lhs=expr, rhs=rhs, con=con)
 
     def minimize(self, expr, *, unit: str = "-", scale: float = 1.0, name: str = "objective"):
         self.objective = expr
@@ -240,28 +382,128 @@ class Problem:
         v.init = val
         self.opti.set_initial(v.scaled, ca.DM(val / v.scale))
 
-    def warm_start(self, solution: "Solution | dict | str | os.PathLike"):
-        """Initial guess from an earlier solution (object, dict or ``solution.json``)."""
-        if isinstance(solution, (str, os.PathLike)):
-            with open(solution) as f:
-                data = json.load(f)
-        elif isinstance(solution, Solution):
-            data = solution.to_dict()
-        else:
-            data = solution
-        used = []
-        for item in data.get("variables", []):
-            v = self.variables.get(item["name"])
+    def warm_start(self, solution: "Solution | dict | str | os.PathLike", *, partial: bool = False,
+                   multipliers: bool = True) -> "WarmStart":
+        """Initial guess from an earlier solution (object, dict or ``solution.json``).
+
+        The source is checked first and nothing is set unless it fits: the problem
+        name, every (non-frozen) variable's name and size, finite values.  A partial
+        fit raises ``WarmStartError`` naming how many variables of how many match,
+        unless ``partial=True`` (then the matching variables are set).  On a full fit
+        from a solve of the same mode (analysis / optimization) the stored multipliers
+        are loaded too and IPOPT's ``warm_start_init_point`` is used, so a converged
+        point re-converges in a couple of iterations.  Returns a ``WarmStart`` report.
+        """
+        data = read_solution(solution)
+        ws = self._match_warm_start(data)
+        if not ws.complete and not partial:
+            raise WarmStartError("warm start", ws.describe() + "; refused (allow a partial warm start to use "
+                                 "the matching variables)")
+        for name in ws.used:
+            self.set_initial(name, ws.values[name])
+        self._warm_lam = None
+        if multipliers and ws.complete and ws.same_mode:
+            lam = self._multipliers_from(data)
+            if lam is not None:
+                self._warm_lam = lam
+                ws.multipliers = True
+        return ws
+
+    def _match_warm_start(self, data: dict) -> "WarmStart":
+        """Compare a solution dict with this problem (no side effects)."""
+        src_name = data.get("problem")
+        targets = {n: v for n, v in self.variables.items() if not v.frozen}
+        ws = WarmStart(source_problem=src_name, problem=self.name, total=len(targets))
+        ws.same_mode = data.get("mode", "optimization" if not data.get("analysis") else "analysis") == \
+            ("analysis" if self._analysis else "optimization")
+        if src_name != self.name:
+            ws.problems.append(f"written by problem {src_name!r}, this is {self.name!r}")
+        seen = set()
+        for item in data["variables"]:
+            name = item.get("name") if isinstance(item, dict) else None
+            if not isinstance(name, str) or "value" not in item:
+                raise WarmStartError("warm start", f"variables entry {item!r:.60} has no name and value")
+            seen.add(name)
+            v = self.variables.get(name)
             if v is None:
+                ws.extra.append(name)
                 continue
-            if np.size(item["value"]) != v.size:
-                continue
-            val = np.asarray(item["value"], dtype=float).reshape(v.shape)
             if v.frozen:
                 continue
-            self.set_initial(v.name, val)
-            used.append(v.name)
-        return used
+            try:
+                val = np.asarray(item["value"], dtype=float)
+            except (TypeError, ValueError):
+                ws.bad.append(f"{name!r} has non-numeric values")
+                continue
+            if val.size != v.size:
+                ws.bad.append(f"{name!r} has {val.size} values, expected {v.size}")
+                continue
+            if not np.all(np.isfinite(val)):
+                ws.bad.append(f"{name!r} has {int(np.sum(~np.isfinite(val)))} non-finite value(s)")
+                continue
+            ws.used.append(name)
+            ws.values[name] = val.reshape(v.shape)
+        ws.missing = [n for n in targets if n not in seen]
+        return ws
+
+    def _dual_index(self) -> dict:
+        """Where each variable's bounds and each group sit in ``opti.lam_g``.
+
+        Found by evaluating Opti's dual expressions at lam_g = 1..ng (CasADi keeps
+        no public index): ``{("x"|"g", name): int array}``, -1 where none.
+        """
+        ng = int(self.opti.ng)
+        cached = getattr(self, "_dual_cache", None)
+        if cached is not None and cached[0] == ng:
+            return cached[1]
+        keys, exprs = [], []
+        for v in self.variables.values():
+            if v.bound_con is not None:
+                keys.append(("x", v.name, v.size))
+                exprs.append(ca.vec(self.opti.dual(v.bound_con)))
+        for g in self.groups.values():
+            keys.append(("g", g.name, g.size))
+            exprs.append(ca.vec(self.opti.dual(g.con)))
+        index = {}
+        if exprs and ng:
+            f = ca.Function("dual_index", [self.opti.lam_g], exprs)
+            a = np.arange(1, ng + 1, dtype=float)
+            pos, neg = f.call([a]), f.call([-a])
+            for (kind, name, n), p_, n_ in zip(keys, pos, neg):
+                m = np.maximum(np.abs(np.asarray(p_, float).ravel()), np.abs(np.asarray(n_, float).ravel()))
+                if m.size == 2 * n:   # a two-sided bound: one block per side, one of them zero
+                    m = np.maximum(m[:n], m[n:])
+                index[(kind, name)] = m.astype(int) - 1
+        self._dual_cache = (ng, index)
+        return index
+
+    def _multipliers_from(self, data: dict):
+        """Full lam_g vector (IPOPT's scaled NLP) from a solution dict's physical
+        multipliers, or None when the file has none or they do not fit."""
+        idx = self._dual_index()
+        lam = np.zeros(int(self.opti.ng))
+        fs = self.objective_scale
+        try:
+            for item in data["variables"]:
+                v = self.variables.get(item["name"])
+                if v is None or ("x", v.name) not in idx or item.get("multiplier") is None:
+                    continue
+                m = np.asarray(item["multiplier"], float).reshape(v.shape)
+                i = idx[("x", v.name)]
+                lam[i[i >= 0]] = (np.ravel(m * v.scale, order="F") / fs)[i >= 0]
+            for item in data.get("constraints", []):
+                g = self.groups.get(item["name"])
+                if g is None or item.get("multiplier") is None:
+                    continue
+                m = np.asarray(item["multiplier"], float).ravel()
+                if m.size != g.size:
+                    return None
+                lam[idx[("g", g.name)]] = m * g.scale / fs
+        except (KeyError, TypeError, ValueError):
+            return None
+        if not data.get("constraints") or not np.all(np.isfinite(lam)):
+            return None
+        return lam
 
     def initial_violations(self, top: int | None = None) -> list:
         """Each constraint group's worst scaled violation at the initial guess
@@ -288,11 +530,14 @@ class Problem:
     # ------------------------------------------------------------------ solve
     def solve(self, *, log_path: str | os.PathLike | None = None, max_iter: int | None = None,
               verbose: bool = True, options: dict | None = None, raise_on_failure: bool = False,
-              hessian: str = "exact") -> "Solution":
+              hessian: str = "exact", progress: Callable | None = None) -> "Solution":
         """Solve with IPOPT; stream the log to the terminal and to ``log_path``.
 
         Returns a ``Solution`` whatever the outcome (check ``.success``); with
         ``raise_on_failure`` a failed solve raises ``SolveError`` carrying it.
+        SIGINT and SIGTERM stop IPOPT and keep the last iterate (status
+        ``Interrupted_By_User`` / ``Terminated_By_Signal``).  ``progress(text)`` is
+        told of the silent phases.
         """
         if self.objective is None:
             self.opti.minimize(0)
@@ -306,55 +551,41 @@ class Problem:
             ipopt["sb"] = "yes"  # no banner
         if log_path is not None:
             log_path = Path(log_path)
-            log_path.parent.mkdir(parents=True, exist_ok=True)
             ipopt["output_file"] = str(log_path)
             ipopt["file_print_level"] = 5
+        warm_lam = getattr(self, "_warm_lam", None)
+        if warm_lam is not None and warm_lam.size == int(self.opti.ng):
+            # restart from a converged primal-dual point: keep IPOPT from pushing the point
+            # and multipliers off their bounds, and start with a small barrier (Wachter &
+            # Biegler 2006, sec. 3.6; IPOPT option docs "Warm Start")
+            self.opti.set_initial(self.opti.lam_g, ca.DM(warm_lam))
+            ipopt.update(WARM_START_OPTIONS)
+        self._warm_lam = None   # used once
         if options:
             ipopt.update(options)
         plugin = {"detect_simple_bounds": True, "print_time": verbose,
                   "error_on_fail": False, "expand": False}
         self.opti.solver("ipopt", plugin, ipopt)
+        if progress is not None:
+            progress("building derivative functions (Jacobian, Hessian) and starting IPOPT")
 
-        history = {"iter": [], "objective": [], "inf_pr": [], "inf_du": []}
-        interrupted = []
-
-        def on_sigint(signum, frame):
-            # CasADi notices the pending KeyboardInterrupt inside IPOPT's callback and
-            # stops with NonIpopt_Exception_Thrown; remember that it was the user.
-            interrupted.append(True)
-            signal.default_int_handler(signum, frame)
-
-        previous = None
-        with contextlib.suppress(ValueError):  # not in the main thread: leave handlers alone
-            previous = signal.signal(signal.SIGINT, on_sigint)
         t0 = time.perf_counter()
-        try:
-            sol = self.opti.solve()
-            debug = sol
-        except KeyboardInterrupt:
-            interrupted.append(True)
-            debug = self.opti.debug
-        except RuntimeError:
-            debug = self.opti.debug
-        finally:
-            if previous is not None:
-                signal.signal(signal.SIGINT, previous)
+        with _signals_as_interrupts() as caught:
+            try:
+                sol = self.opti.solve()
+                debug = sol
+            except KeyboardInterrupt:
+                caught.setdefault("signal", signal.SIGINT)
+                debug = self.opti.debug
+            except RuntimeError:
+                debug = self.opti.debug
         wall = time.perf_counter() - t0
         stats = {}
         with contextlib.suppress(Exception):
             stats = dict(self.opti.stats())
-        it = stats.get("iterations", {})
-        if it:
-            history["objective"] = [float(v) for v in it.get("obj", [])]
-            history["inf_pr"] = [float(v) for v in it.get("inf_pr", [])]
-            history["inf_du"] = [float(v) for v in it.get("inf_du", [])]
-            history["iter"] = list(range(len(history["objective"])))
-        status = "Interrupted_By_User" if interrupted else stats.get("return_status", "unknown")
-        success = bool(stats.get("success", False)) and not interrupted
-        n_iter = int(stats.get("iter_count", 0))
-        if not (0 <= n_iter <= int(ipopt["max_iter"])):
-            # IPOPT aborted (interrupt, exception): its counter is not set; use what was logged
-            n_iter = max(len(history["objective"]) - 1, 0)
+        history, status, success, n_iter = _outcome(stats, int(ipopt["max_iter"]), caught.get("signal"))
+        if status in CRASH_ON_EXIT_STATUS:
+            FRAGILE.append(self.opti)   # kept alive: destroying it crashes
         solution = Solution._from_debug(self, debug, status=status, success=success,
                                         iterations=n_iter, wall_time_s=wall,
                                         stats=stats, history=history)
@@ -399,6 +630,10 @@ class Solution:
     nlp_size: dict
     timing: dict
     analysis: bool = False
+    constraints: list = field(default_factory=list)   # per group: kind, unit, scale, labels, lhs, rhs, multiplier
+    objective_scale: float = 1.0
+    active: list = field(default_factory=list)        # what limits the design (active_limits)
+    pinned: list = field(default_factory=list)        # variables at a bound (pinned_variables)
     _values: dict = field(default_factory=dict, repr=False)
     _problem: object = field(default=None, repr=False)
     _debug: object = field(default=None, repr=False)
@@ -412,39 +647,46 @@ class Solution:
             except Exception:
                 return np.full(np.shape(e) if hasattr(e, "shape") else (1,), np.nan)
 
+        fs = problem.objective_scale
+        lam = val(problem.opti.lam_g).ravel() if problem.opti.ng else np.zeros(0)
+        if lam.size != int(problem.opti.ng):
+            lam = np.full(int(problem.opti.ng), np.nan)   # IPOPT stopped before its first iterate
+        index = problem._dual_index()
         values = {}
         variables = []
         for v in problem.variables.values():
             x = np.reshape(val(v.scaled), v.shape) * v.scale
             values[v.name] = x
+            i = index.get(("x", v.name))
+            mult = None
+            if i is not None:   # objective units per model unit of the variable
+                m = np.where(i >= 0, lam[np.maximum(i, 0)], 0.0) * fs / np.ravel(v.scale, order="F")
+                mult = _jsonable(m.reshape(v.shape, order="F"))
             variables.append({"name": v.name, "unit": v.unit, "value": _jsonable(x),
-                              "design": v.design, "description": v.description})
+                              "design": v.design, "description": v.description,
+                              "scale": _jsonable(v.scale), "lower": _bound_json(v.lower),
+                              "upper": _bound_json(v.upper), "frozen": v.frozen,
+                              "labels": v.labels, "multiplier": mult})
         outputs = {}
         for o in problem.outputs.values():
             outputs[o.name] = {"value": _jsonable(val(o.expr)), "unit": o.unit, "summary": o.summary}
-        violations = []
+        constraints = []
         for g in problem.groups.values():
-            r = val(g.residual).ravel()
-            if g.kind == "==":
-                viol = np.abs(r)
-            elif g.kind == "<=":
-                viol = np.maximum(r, 0.0)
-            else:
-                viol = np.maximum(-r, 0.0)
-            bad = ~np.isfinite(r)
-            viol = np.where(bad, np.inf, viol)
-            i = int(np.argmax(viol)) if viol.size else 0
-            violations.append({"group": g.name, "kind": g.kind, "nonfinite": int(bad.sum()),
-                               "max_violation": float(viol[i] * g.scale) if viol.size else 0.0,
-                               "scaled": float(viol[i]) if viol.size else 0.0,
-                               "where": g.labels[i] if viol.size else "", "unit": g.unit,
-                               "size": g.size})
+            m = lam[index[("g", g.name)]] * fs / g.scale
+            constraints.append({"name": g.name, "kind": g.kind, "unit": g.unit, "scale": g.scale,
+                                "labels": g.labels, "lhs": _flat(val(g.lhs), g.size).tolist(),
+                                "rhs": _compact(_flat(val(g.rhs), g.size)), "multiplier": m.tolist()})
+        violations = [_worst_violation(c) for c in constraints]
         violations.sort(key=lambda d: -d["scaled"])
-        obj = float(val(problem.objective)) if problem.objective is not None else float("nan")
+        obj = float(np.ravel(val(problem.objective))[0]) if problem.objective is not None else float("nan")
         timing = {k: float(v) for k, v in stats.items() if k.startswith("t_wall_") or k.startswith("n_call_")}
         sol = cls(problem.name, status, success, iterations, wall_time_s, obj, problem.objective_unit,
                   problem.objective_name, variables, outputs, violations, history,
                   problem.nlp_size(), timing, analysis=problem._analysis)
+        sol.constraints = constraints
+        sol.objective_scale = fs
+        sol.active = active_limits(sol)
+        sol.pinned = pinned_variables(sol)
         sol._values = values
         sol._problem = problem
         sol._debug = debug
@@ -470,6 +712,8 @@ class Solution:
         return {k: o["value"] for k, o in self.outputs.items() if o["summary"]}
 
     def violation_report(self, top: int = 5, tol: float = 1e-6) -> str:
+        """The worst-violated groups and, when any is violated, the variables pinned at a
+        bound: a too-small battery shows as its state pinned, not only as a force residual."""
         bad = [v for v in self.violations if v["scaled"] > tol]
         if not bad:
             return "all constraint groups satisfied (scaled violation <= %g)" % tol
@@ -481,13 +725,23 @@ class Solution:
                 continue
             lines.append(f"  {v['group']:<32s} {v['kind']:>2s}  {v['scaled']:10.3e}  "
                          f"{v['max_violation']:10.3e} {v['unit']:<6s} at {v['where']}")
+        if self.pinned:
+            lines.append("variables pinned at a bound (possible causes, most pushed first):")
+            for p in self.pinned:
+                lines.append("  " + describe_pinned(p))
         return "\n".join(lines)
 
     def to_dict(self) -> dict:
-        return {"problem": self.problem_name, "status": self.status, "success": self.success,
+        """solution.json: every variable (value, bounds, scale, multiplier), every
+        constraint group (kind, unit, scale, labels, lhs, rhs, multiplier), outputs.
+
+        Multipliers are in objective units per unit of the variable / group, signed as
+        IPOPT's (L = f + lam g: positive pushes at an upper limit, negative at a lower)."""
+        return {"problem": self.problem_name, "mode": "analysis" if self.analysis else "optimization",
+                "status": self.status, "success": self.success,
                 "objective": {"name": self.objective_name, "value": self.objective,
-                              "unit": self.objective_unit},
-                "variables": self.variables, "outputs": self.outputs}
+                              "unit": self.objective_unit, "scale": self.objective_scale},
+                "variables": self.variables, "constraints": self.constraints, "outputs": self.outputs}
 
     def summary(self) -> dict:
         d = {"problem": self.problem_name, "mode": "analysis" if self.analysis else "optimization",
@@ -496,25 +750,31 @@ class Solution:
              "iterations": self.iterations, "wall_time_s": round(self.wall_time_s, 3),
              "nlp_size": self.nlp_size}
         d.update(self.summary_values())
+        d["active"] = [{k: a[k] for k in ("name", "kind", "where", "multiplier", "unit")} for a in self.active]
         d["worst_violations"] = [v for v in self.violations[:5]]
+        d["pinned_at_bounds"] = self.pinned
         d["timing"] = self.timing
         return d
 
     # -------------------------------------------------------------- files
     def save(self, out_dir: str | os.PathLike) -> Path:
-        """Write solution.json, summary.json, summary.md, convergence.csv into ``out_dir``."""
+        """Write solution.json, summary.json, summary.md, convergence.csv into ``out_dir``,
+        each through a temporary name and an atomic rename (a reader never sees half a file)."""
         out = Path(out_dir)
         out.mkdir(parents=True, exist_ok=True)
-        with open(out / "solution.json", "w") as f:
-            json.dump(self.to_dict(), f, indent=1, default=_json_default)
-        with open(out / "summary.json", "w") as f:
-            json.dump(self.summary(), f, indent=1, default=_json_default)
-        (out / "summary.md").write_text(self.summary_markdown())
-        with open(out / "convergence.csv", "w") as f:
-            f.write("iter,objective,inf_pr,inf_du\n")
+        # solution.json is for programs (warm start, mdo check, plots): one line, no indent
+        write_atomic(out / "solution.json", json.dumps(self.to_dict(), default=_json_default))
+        write_atomic(out / "summary.json", json.dumps(self.summary(), indent=1, default=_json_default))
+        write_atomic(out / "summary.md", self.summary_markdown())
+        if (out / "ipopt.log").exists():   # one source: the iteration lines the log shows
+            from ..plots.convergence import convergence_csv
+            write_atomic(out / "convergence.csv", convergence_csv(out / "ipopt.log"))
+        else:                              # no log: the intermediate callback's history
             h = self.history
-            for i in range(len(h.get("objective", []))):
-                f.write(f"{i},{h['objective'][i]:.10g},{h['inf_pr'][i]:.6g},{h['inf_du'][i]:.6g}\n")
+            rows = ["iter,objective,inf_pr,inf_du\n"] + [
+                f"{i},{h['objective'][i]:.10g},{h['inf_pr'][i]:.6g},{h['inf_du'][i]:.6g}\n"
+                for i in range(len(h.get("objective", [])))]
+            write_atomic(out / "convergence.csv", "".join(rows))
         return out
 
     def summary_markdown(self) -> str:
@@ -531,12 +791,228 @@ class Solution:
             lines.append("")
         design = [v for v in self.variables if v["design"]]
         if design:
-            lines += ["## Design variables", "", "| name | value | unit | description |", "|---|---|---|---|"]
+            lines += ["## Design variables", "", "| name | value | unit | bounds | description |",
+                      "|---|---|---|---|---|"]
             for v in design:
-                lines.append(f"| {v['name']} | {_fmt(v['value'])} | {v['unit']} | {v['description']} |")
+                val, unit = _readable(v["value"], v["unit"])
+                lo, _ = _readable(v["lower"], v["unit"]) if v.get("lower") is not None else ("-inf", unit)
+                up, _ = _readable(v["upper"], v["unit"]) if v.get("upper") is not None else ("inf", unit)
+                lines.append(f"| {v['name']} | {val} | {unit} | {lo} to {up} | {v['description']} |")
             lines.append("")
+        lines += _active_markdown(self.active)
         lines += ["## Constraint groups (worst scaled violation)", "", self.violation_report(top=10), ""]
         return "\n".join(lines)
+
+
+def describe_pinned(p: dict) -> str:
+    """'energy_drawn at its upper bound 3.6e+07 J from element [0, 12] (13 of 40 elements)'."""
+    val, unit = _readable(p["bound"], p["unit"])
+    text = f"{p['name']} at its {p['side']} bound {val} {unit}"
+    if p["size"] > 1:
+        text += f" from {p['first']} ({p['count']} of {p['size']} elements)"
+    return text
+
+
+def _active_markdown(active: list, top: int = 30) -> list:
+    """The 'what limits the design' table: one row per (name, side of limit), the
+    largest multiplier of its elements, where the first one is."""
+    lines = ["## What limits the design (active bounds and constraints)", ""]
+    if not active:
+        return lines + ["no design bound within 1 % and no inequality constraint active", ""]
+    rows: dict = {}
+    for a in active:
+        key = (a["name"], a["kind"], a["where"].split(": ")[-1] if a["kind"] == "bound" else "")
+        r = rows.setdefault(key, {**a, "count": 0})
+        r["count"] += 1
+        r["multiplier"] = max(r["multiplier"], a["multiplier"])
+    ranked = sorted(rows.values(), key=lambda r: -r["multiplier"])
+    lines += ["| name | kind | where | multiplier | unit |", "|---|---|---|---|---|"]
+    for r in ranked[:top]:
+        where = r["where"] + (f" (+{r['count'] - 1} more)" if r["count"] > 1 else "")
+        lines.append(f"| {r['name']} | {r['kind']} | {where} | {r['multiplier']:.4g} | {r['unit']} |")
+    if len(ranked) > top:
+        lines.append(f"| ... | | {len(ranked) - top} more rows in summary.json | | |")
+    return lines + [""]
+
+
+def _readable(v, unit: str):
+    """A value as people read it: angles in degrees, 4 significant digits."""
+    a = np.asarray(np.nan if v is None else v, dtype=float) + 0.0   # + 0.0: no "-0"
+    if unit == "rad":
+        a, unit = np.degrees(a), "deg"
+    if a.size == 1:
+        return f"{float(a.ravel()[0]):.4g}", unit
+    return "[" + ", ".join(f"{x:.4g}" for x in a.ravel()) + "]", unit
+
+
+def write_atomic(path, text: str) -> None:
+    """Write ``text`` to ``path`` through ``path.tmp-<pid>`` and ``os.replace`` (atomic on
+    POSIX); a symbolic link at ``path`` is refused rather than followed."""
+    path = Path(path)
+    if path.is_symlink():
+        raise OSError(40, "is a symbolic link; mdo does not write through links", str(path))
+    tmp = path.with_name(f".{path.name}.tmp-{os.getpid()}")
+    try:
+        with open(tmp, "w") as f:
+            f.write(text)
+            f.flush()
+            os.fsync(f.fileno())
+        os.replace(tmp, path)
+    except BaseException:
+        with contextlib.suppress(OSError):
+            tmp.unlink()
+        raise
+
+
+def _flat(a, n: int) -> np.ndarray:
+    """Values of an expression flattened column-major (CasADi's ``vec``), a scalar broadcast to n."""
+    a = np.asarray(a, dtype=float)
+    if a.size == 1 and n != 1:
+        return np.full(n, float(a.ravel()[0]))
+    return a.ravel(order="F") if a.size == n else np.full(n, np.nan)
+
+
+def _bound_json(b):
+    """A bound array for JSON: infinite entries as None (JSON has no infinity)."""
+    a = np.asarray(b, dtype=float)
+    if np.all(np.isfinite(a)):
+        return _jsonable(a)
+    if a.size == 1 or not np.any(np.isfinite(a)):
+        return None
+    obj = a.astype(object)
+    obj[~np.isfinite(a)] = None
+    return obj.tolist()
+
+
+def _bound_array(b, shape, fill: float) -> np.ndarray:
+    """Inverse of ``_bound_json``: None -> ``fill`` (+-inf), column-major flat."""
+    n = int(np.prod(shape))
+    if b is None:
+        return np.full(n, fill)
+    a = np.array(b, dtype=object)
+    a = np.where(np.equal(a, None), fill, a).astype(float)
+    return np.broadcast_to(a, shape).ravel(order="F") if a.size > 1 else np.full(n, float(a))
+
+
+def element_label(var: dict, i: int) -> str:
+    """Label of element ``i`` (column-major) of a variable entry of solution.json."""
+    shape = np.shape(var["value"]) or (1,)
+    n = int(np.prod(shape))
+    labels = var.get("labels")
+    if labels and len(labels) == n:
+        return labels[i]
+    if labels and len(shape) == 2 and len(labels) == shape[1]:   # one label per column (node)
+        return labels[i // shape[0]] + (f" row {i % shape[0]}" if shape[0] > 1 else "")
+    if n == 1:
+        return ""
+    if len(shape) == 1 or shape[1] == 1:
+        return f"element {i}"
+    return f"element [{i % shape[0]}, {i // shape[0]}]"
+
+
+def _compact(a: np.ndarray):
+    """A list, or one number when every element is the same (most right-hand sides)."""
+    return float(a[0]) if a.size and np.all(a == a[0]) else a.tolist()
+
+
+def group_values(c: dict):
+    """(lhs, rhs) arrays of a constraint entry of solution.json (None -> NaN, rhs broadcast)."""
+    lhs = np.array([np.nan if x is None else x for x in c["lhs"]], dtype=float)
+    rhs = c["rhs"]
+    rhs = np.full(lhs.size, np.nan if rhs is None else float(rhs)) if not isinstance(rhs, list) else \
+        np.array([np.nan if x is None else x for x in rhs], dtype=float)
+    return lhs, rhs
+
+
+def group_residual(c: dict) -> np.ndarray:
+    """Scaled residual (lhs - rhs) / scale of a constraint entry of solution.json."""
+    lhs, rhs = group_values(c)
+    return (lhs - rhs) / float(c["scale"])
+
+
+def _worst_violation(c: dict) -> dict:
+    """A group's worst element: the violation in scaled and group units and where."""
+    r = group_residual(c)
+    kind = c["kind"]
+    viol = np.abs(r) if kind == "==" else (np.maximum(r, 0.0) if kind == "<=" else np.maximum(-r, 0.0))
+    bad = ~np.isfinite(r)
+    viol = np.where(bad, np.inf, viol)
+    i = int(np.argmax(viol)) if viol.size else 0
+    return {"group": c["name"], "kind": kind, "nonfinite": int(bad.sum()),
+            "max_violation": float(viol[i] * c["scale"]) if viol.size else 0.0,
+            "scaled": float(viol[i]) if viol.size else 0.0,
+            "where": c["labels"][i] if viol.size else "", "unit": c["unit"], "size": len(r)}
+
+
+def _variable_arrays(v: dict):
+    """(value, lower, upper, scale, multiplier) of a variable entry, column-major flat."""
+    x = np.asarray(v["value"], dtype=float)
+    shape = x.shape or (1,)
+    flat = lambda a: np.broadcast_to(np.asarray(a, float), shape).ravel(order="F")  # noqa: E731
+    lo = _bound_array(v.get("lower"), shape, -np.inf)
+    up = _bound_array(v.get("upper"), shape, np.inf)
+    m = flat(v["multiplier"]) if v.get("multiplier") is not None else np.zeros(x.size)
+    return flat(x), lo, up, flat(v.get("scale", 1.0)), m
+
+
+def active_limits(sol: "Solution") -> list:
+    """What limits the design (#16 item 5): every design-variable bound within
+    ``DESIGN_BOUND_FRACTION`` of the value, every other variable at a bound that pushes
+    (multiplier of the scaled problem > 1e-6), every active inequality element.
+
+    ``multiplier`` is |d objective / d limit| in objective units per unit of the
+    limit: what relaxing it by one unit would gain (first order)."""
+    fu, out = sol.objective_unit, []
+    for v in sol.variables:
+        if v.get("frozen") or v.get("multiplier") is None:
+            continue
+        x, lo, up, sc, m = _variable_arrays(v)
+        for side, b, d in (("lower", lo, x - lo), ("upper", up, up - x)):
+            fin = np.isfinite(b) & (lo != up)
+            if v["design"]:
+                ref = np.where(b != 0, np.abs(b), np.where(np.isfinite(up - lo), up - lo, 1.0))
+                near = fin & (d <= DESIGN_BOUND_FRACTION * ref)
+            else:
+                near = fin & (d / sc <= ACTIVE_SLACK) & (np.abs(m) * sc / sol.objective_scale > 1e-6)
+            for i in np.flatnonzero(near):
+                lab = element_label(v, int(i))
+                out.append({"name": v["name"], "kind": "bound",
+                            "where": (f"{lab}: " if lab else "") + f"{side} bound {b[i]:.6g} {v['unit']}",
+                            "multiplier": float(abs(m[i])), "unit": f"{fu} per {v['unit']}",
+                            "value": float(x[i]), "limit": float(b[i]), "design": bool(v["design"])})
+    for c in sol.constraints:
+        if c["kind"] == "==":
+            continue
+        r = group_residual(c)
+        lhs, rhs = group_values(c)
+        slack = -r if c["kind"] == "<=" else r
+        m = np.asarray([np.nan if x is None else x for x in c["multiplier"]], float)
+        for i in np.flatnonzero(np.isfinite(slack) & (slack <= ACTIVE_SLACK)):
+            out.append({"name": c["name"], "kind": "constraint", "where": c["labels"][i],
+                        "multiplier": float(abs(m[i])), "unit": f"{fu} per {c['unit']}",
+                        "value": float(lhs[i]), "limit": float(rhs[i]), "design": False})
+    return out
+
+
+def pinned_variables(sol: "Solution", top: int = 6) -> list:
+    """Variables sitting at a bound, one entry per (variable, side): the likely causes
+    of an infeasible solve (#19 item 5), those IPOPT pushes hardest first."""
+    out = []
+    for v in sol.variables:
+        if v.get("frozen"):
+            continue
+        x, lo, up, sc, m = _variable_arrays(v)
+        for side, b, d in (("lower", lo, x - lo), ("upper", up, up - x)):
+            at = np.isfinite(b) & (lo != up) & (d <= 1e-6 * np.maximum(np.abs(b), sc))
+            if not at.any():
+                continue
+            idx = np.flatnonzero(at)
+            push = np.abs(m[idx]) * sc[idx] / sol.objective_scale
+            out.append({"name": v["name"], "side": side, "bound": float(b[idx[0]]), "unit": v["unit"],
+                        "first": element_label(v, int(idx[0])), "count": int(idx.size), "size": int(x.size),
+                        "push": float(np.nanmax(push)) if np.any(np.isfinite(push)) else 0.0})
+    out.sort(key=lambda d: -d["push"])
+    return out[:top]
 
 
 def _fmt(v):

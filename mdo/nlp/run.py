@@ -10,29 +10,50 @@ the run folder (``results/<problem-file-stem>/`` by default, ``.../analysis/`` f
 ``summary.json``     status, objective with unit, iterations, wall time, NLP size,
                      the problem's summary outputs (e.g. battery_energy_kWh)
 ``summary.md``       the same for people, with the worst constraint violations
-``convergence.csv``  objective, primal and dual infeasibility per iteration
+``convergence.csv``  the iteration lines of ipopt.log (objective, inf_pr, inf_du, lg_mu ...)
+``report.html``      one self-contained page: status, objective, constraints, design, figures
 plus whatever the problem's reports write (figures, mission.csv, ...).
 
-An existing run folder is never overwritten unless ``force=True``.
+An existing run folder is never overwritten: ``force=True`` moves it aside to
+``NAME.old-<timestamp>`` once the new run is complete.  See ``RunFolder`` for the
+lock, the staging folder and what a killed or failed run leaves.
 """
 from __future__ import annotations
 
+import contextlib
+import errno
+import fcntl
 import importlib.util
 import inspect
+import json
+import os
+import shutil
 import sys
+import tempfile
+import time
 import traceback
 from pathlib import Path
 
 from .options import check_options
-from .problem import Problem, Solution
+from .problem import INTERRUPT_STATUS, Problem, Solution, WarmStartError, write_atomic
 
-__all__ = ["RunError", "load_problem_file", "default_out_dir", "run_problem", "RESULT_FILES"]
+__all__ = ["RunError", "ResultWriteError", "RunFolder", "load_problem_file", "default_out_dir",
+           "run_problem", "solve_into", "RESULT_FILES"]
 
 RESULT_FILES = ("summary.json", "solution.json", "ipopt.log")
+RUN_MARKER = ".mdo-run"   # written into every finished run folder
 
 
 class RunError(Exception):
     """A problem that cannot be run as asked (bad file, bad option, existing results)."""
+
+
+class ResultWriteError(RunError):
+    """The solve finished but its results could not be written (exit 1, not 2)."""
+
+    def __init__(self, error: RunError, solution: Solution):
+        super().__init__(str(error))
+        self.solution = solution
 
 
 def _import_file(path: Path):
@@ -44,24 +65,26 @@ def _import_file(path: Path):
     sys.modules[name] = module
     try:
         spec.loader.exec_module(module)
-    except (Exception, SystemExit) as exc:  # the user's file: report, do not crash (nor exit 0 with it)
-        raise RunError(f"problem file {path} failed to import: {_failure(exc)}") from exc
+    except SystemExit as exc:
+        raise RunError(f"problem file {path} called sys.exit({exc.code!r}) while being imported; "
+                       f"a problem file defines build(**options) and returns") from None
+    except Exception as exc:  # the user's file: report, do not crash
+        raise RunError(f"problem file {path} failed to import: {type(exc).__name__}: {exc}") from exc
     return module
-
-
-def _failure(exc) -> str:
-    if isinstance(exc, SystemExit):
-        return f"it called sys.exit({exc.code!r}); a problem file must not exit"
-    return f"{type(exc).__name__}: {exc}"
 
 
 def load_problem_file(path, *, analysis: bool = False, options: dict | None = None) -> Problem:
     """Import ``path``, call its ``build(**options)`` and check it returns a Problem."""
     path = Path(path)
-    if not path.exists():
-        raise RunError(f"problem file {path} does not exist")
-    if path.suffix != ".py" or not path.is_file():
-        raise RunError(f"problem file {path}: expected a .py file")
+    try:
+        if not path.exists():
+            raise RunError(f"problem file {path} does not exist")
+        if path.suffix != ".py" or not path.is_file():
+            raise RunError(f"problem file {path}: expected a .py file")
+        with open(path, "rb"):
+            pass
+    except OSError as exc:
+        raise fs_error(exc, "problem file", path) from exc
     module = _import_file(path)
     build = getattr(module, "build", None)
     if build is None or not callable(build):
@@ -76,12 +99,14 @@ def load_problem_file(path, *, analysis: bool = False, options: dict | None = No
         problem = build(**options)
     except RunError:
         raise
-    except (Exception, SystemExit) as exc:
-        raise RunError(f"problem file {path}: build() failed: {_failure(exc)}") from exc
-    if problem is None:
-        raise RunError(f"problem file {path}: build() returned nothing (None), expected an mdo.nlp.Problem")
+    except SystemExit as exc:
+        raise RunError(f"problem file {path}: build() called sys.exit({exc.code!r}) instead of "
+                       f"returning an mdo.nlp.Problem") from None
+    except Exception as exc:
+        raise RunError(f"problem file {path}: build() failed: {type(exc).__name__}: {exc}") from exc
     if not isinstance(problem, Problem):
-        raise RunError(f"problem file {path}: build() returned {type(problem).__name__}, "
+        got = "nothing (None)" if problem is None else type(problem).__name__
+        raise RunError(f"problem file {path}: build() returned {got}, "
                        f"expected an mdo.nlp.Problem")
     if analysis:
         problem.freeze_design()
@@ -93,43 +118,254 @@ def default_out_dir(path, analysis: bool = False, root="results") -> Path:
     return out / "analysis" if analysis else out
 
 
+def fs_error(exc: OSError, what: str, path=None) -> "RunError":
+    """One line for a file-system error: what was being done, the path, why."""
+    where = path if path is not None else (exc.filename or "?")
+    reason = exc.strerror or str(exc)
+    if exc.errno == errno.ENAMETOOLONG:
+        reason = "name too long for the file system"
+    elif exc.errno == errno.ENOSPC:
+        reason = "no space left on the device"
+    elif exc.errno in (errno.EROFS, errno.EACCES, errno.EPERM):
+        reason = f"not writable ({exc.strerror})"
+    return RunError(f"{what} {where}: {reason}")
+
+
+def _is_run(folder: Path) -> bool:
+    return (folder / RUN_MARKER).exists() or any((folder / f).exists() for f in RESULT_FILES) or \
+        any((folder / "analysis" / f).exists() for f in RESULT_FILES)
+
+
+def _links_in(folder: Path, limit: int = 10000):
+    """The first symbolic link inside ``folder`` (not followed), or None."""
+    seen = 0
+    for root, dirs, files in os.walk(folder, followlinks=False):
+        for name in dirs + files:
+            seen += 1
+            if os.path.islink(os.path.join(root, name)):
+                return Path(root) / name
+            if seen > limit:
+                return None
+    return None
+
+
 def check_out_dir(out_dir, force: bool) -> Path:
+    """Refuse an output folder that cannot take a new run (one line naming why)."""
     out = Path(out_dir)
-    if out.exists() and not out.is_dir():
-        raise RunError(f"--out {out}: exists and is not a folder")
-    existing = [f for f in RESULT_FILES if (out / f).exists()]
-    if existing and not force:
-        raise RunError(f"{out} already holds a run ({', '.join(existing)}); "
-                       f"pass --force to replace it or --out to write elsewhere")
+    try:
+        if out.is_symlink():
+            raise RunError(f"--out {out}: is a symbolic link; give the real folder")
+        if out.exists() and not out.is_dir():
+            raise RunError(f"--out {out}: exists and is not a folder")
+        if out.is_dir():
+            link = _links_in(out)
+            if link is not None:
+                raise RunError(f"--out {out}: holds a symbolic link {link}; mdo does not write through "
+                               f"links (remove it or choose another folder)")
+            if _is_run(out):
+                if not force:
+                    existing = [f for f in RESULT_FILES if (out / f).exists()] or \
+                        [f"analysis/{f}" for f in RESULT_FILES if (out / "analysis" / f).exists()]
+                    raise RunError(f"{out} already holds a run ({', '.join(existing) or RUN_MARKER}); "
+                                   f"pass --force to move it aside or --out to write elsewhere")
+            elif any(out.iterdir()):
+                first = sorted(p.name for p in out.iterdir())[0]
+                raise RunError(f"--out {out}: holds files that are not an mdo run (e.g. {first}); "
+                               f"choose a new or empty folder")
+    except OSError as exc:
+        raise fs_error(exc, "--out") from exc
     return out
 
 
-def run_problem(problem: Problem, out_dir, *, force: bool = False, max_iter: int | None = None,
-                warm_start=None, verbose: bool = True, solve_options: dict | None = None) -> Solution:
-    """Solve ``problem`` and write its run folder; returns the Solution (check ``.success``)."""
-    out = check_out_dir(out_dir, force)
-    out.mkdir(parents=True, exist_ok=True)
-    if warm_start is not None:
-        ws = Path(warm_start)
-        if not ws.exists():
-            raise RunError(f"--warm-start {ws}: file does not exist")
+class RunFolder:
+    """An output folder written safely (#19 item 1).
+
+    * an exclusive ``flock`` on ``PARENT/.NAME.lock`` for the whole run: a second run
+      into the same folder is refused at once;
+    * everything is written into a fresh sibling ``NAME.incomplete-XXXX`` (with an
+      ``INCOMPLETE.txt`` saying so) and renamed into place only when complete, so a
+      killed run (even ``kill -9``) leaves the earlier run untouched;
+    * on success an earlier run is moved aside to ``NAME.old-<timestamp>`` (never
+      deleted, never mixed with the new files); a failed or interrupted run goes to
+      ``NAME.failed-<timestamp>`` / ``NAME.interrupted-<timestamp>`` when an earlier
+      run is in place, else into ``NAME``;
+    * the parent is made and the staging folder written before anything is built, so
+      an unwritable ``--out`` is one line, early.  ``abort()`` removes what it made.
+    """
+
+    def __init__(self, out_dir, force: bool = False):
+        self.out = Path(out_dir)
+        self.force = force
+        self.stage = None
+        self.moved_aside = None
+        self._lock = None
+        self._lock_path = None
+        self._made = []
+
+    # ------------------------------------------------------------ open
+    def open(self) -> "RunFolder":
+        check_out_dir(self.out, self.force)
+        parent = self.out.parent
         try:
-            used = problem.warm_start(ws)
-        except Exception as exc:
-            raise RunError(f"--warm-start {ws}: not a readable solution.json ({type(exc).__name__}: {exc})") from exc
-        if verbose:
-            print(f"warm start from {ws}: {len(used)} variables set")
-    log = out / "ipopt.log"
-    if log.exists():
-        log.unlink()
-    solution = problem.solve(log_path=log, max_iter=max_iter, verbose=verbose, **(solve_options or {}))
-    solution.save(out)
+            missing = []
+            p = parent
+            while not p.exists():
+                missing.append(p)
+                p = p.parent
+            parent.mkdir(parents=True, exist_ok=True)
+            self._made = missing
+            self._acquire(parent)
+            check_out_dir(self.out, self.force)   # again, under the lock: another run may have finished
+            self.stage = Path(tempfile.mkdtemp(prefix=f"{self.out.name}.incomplete-", dir=parent))
+            umask = os.umask(0)
+            os.umask(umask)
+            os.chmod(self.stage, 0o777 & ~umask)   # mkdtemp makes it private; a run folder is not
+            (self.stage / "INCOMPLETE.txt").write_text(
+                f"An mdo run into {self.out} (pid {os.getpid()}, started {time.ctime()}) is writing here.\n"
+                f"If no run is going on, it was killed: this folder is incomplete; delete it.\n")
+        except RunError:
+            self.abort()
+            raise
+        except OSError as exc:
+            self.abort()
+            raise fs_error(exc, "--out", self.out) from exc
+        return self
+
+    def _acquire(self, parent: Path):
+        path = parent / f".{self.out.name}.lock"
+        for _ in range(10):
+            fd = os.open(path, os.O_RDWR | os.O_CREAT, 0o644)
+            try:
+                fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+            except BlockingIOError:
+                os.close(fd)
+                raise RunError(f"--out {self.out}: another mdo run is writing it (lock {path} held); "
+                               f"wait for it or choose another --out") from None
+            # the lock file may have been unlinked by the run that just finished: retry on the new one
+            try:
+                same = os.fstat(fd).st_ino == os.stat(path).st_ino
+            except FileNotFoundError:
+                same = False
+            if same:
+                self._lock, self._lock_path = fd, path
+                return
+            os.close(fd)
+        raise RunError(f"--out {self.out}: could not take the lock {path}")
+
+    def _release(self):
+        if self._lock is not None:
+            with contextlib.suppress(OSError):
+                os.unlink(self._lock_path)
+            os.close(self._lock)
+            self._lock = None
+
+    # ------------------------------------------------------------ close
+    def commit(self, success: bool, status: str = "") -> Path:
+        """Move the finished run into place; returns where it now is."""
+        try:
+            (self.stage / "INCOMPLETE.txt").unlink()
+            write_atomic(self.stage / RUN_MARKER, json.dumps(
+                {"folder": str(self.out), "status": status, "success": success, "finished": time.ctime()}) + "\n")
+            stamp = time.strftime("%Y%m%d-%H%M%S")
+            earlier = self.out.exists() and _is_run(self.out)
+            if earlier and success:
+                self.moved_aside = _free_name(self.out, f"old-{stamp}")
+                os.rename(self.out, self.moved_aside)
+                target = self.out
+            elif earlier:
+                target = _free_name(self.out, f"{'interrupted' if status in INTERRUPT_STATUS else 'failed'}-{stamp}")
+            else:
+                target = self.out
+            os.rename(self.stage, target)   # onto a missing or empty folder: atomic
+        except OSError as exc:
+            raise fs_error(exc, "moving the finished run into place:", self.out) from exc
+        finally:
+            self._release()
+        self.stage = None
+        return target
+
+    def abort(self):
+        """Nothing happened: remove the staging folder, the parents made, the lock."""
+        if self.stage is not None:
+            shutil.rmtree(self.stage, ignore_errors=True)
+            self.stage = None
+        self._release()
+        for p in self._made:
+            with contextlib.suppress(OSError):
+                p.rmdir()
+        self._made = []
+
+    def keep_incomplete(self):
+        """A failure while writing: leave the staging folder (it says it is incomplete)."""
+        self._release()
+
+
+def _free_name(out: Path, tag: str) -> Path:
+    cand = out.with_name(f"{out.name}.{tag}")
+    k = 1
+    while cand.exists():
+        k += 1
+        cand = out.with_name(f"{out.name}.{tag}-{k}")
+    return cand
+
+
+def solve_into(problem: Problem, folder, *, max_iter: int | None = None, verbose: bool = True,
+               solve_options: dict | None = None, progress=None) -> Solution:
+    """Solve ``problem`` and write its files into ``folder`` (no folder management: a
+    staging folder of a ``RunFolder``).  An ``OSError`` while writing the results is
+    raised as ``ResultWriteError`` (exit 1: the solve happened)."""
+    folder = Path(folder)
+    folder.mkdir(parents=True, exist_ok=True)
+    solution = problem.solve(log_path=folder / "ipopt.log", max_iter=max_iter, verbose=verbose,
+                             progress=progress, **(solve_options or {}))
+    try:
+        solution.save(folder)
+    except OSError as exc:
+        raise ResultWriteError(fs_error(exc, "writing the results into", folder), solution) from exc
     for report in problem.reports:
         try:
-            report(solution, out)
+            report(solution, folder)
         except Exception as exc:  # a broken figure must not lose the solve
             print(f"warning: report {getattr(report, '__name__', report)} failed: "
                   f"{type(exc).__name__}: {exc}", file=sys.stderr)
             if verbose:
                 traceback.print_exc()
+    try:   # the page a designer opens, from the files just written (as ``mdo plot`` makes it)
+        from ..plots.report_html import write_report_html
+        write_report_html(folder)
+    except Exception as exc:
+        print(f"warning: report.html failed: {type(exc).__name__}: {exc}", file=sys.stderr)
+    return solution
+
+
+def load_warm_start(problem: Problem, source, *, partial: bool = False):
+    """``problem.warm_start`` with its errors as one ``RunError`` line."""
+    try:
+        return problem.warm_start(source, partial=partial)
+    except WarmStartError as exc:
+        raise RunError(f"--{exc}") from exc
+
+
+def run_problem(problem: Problem, out_dir, *, force: bool = False, max_iter: int | None = None,
+                warm_start=None, warm_start_partial: bool = False, verbose: bool = True,
+                solve_options: dict | None = None) -> Solution:
+    """Solve ``problem`` and write its run folder safely (``RunFolder``); returns the
+    Solution (check ``.success``).  The warm start is checked before anything is made."""
+    if warm_start is not None:
+        ws = load_warm_start(problem, warm_start, partial=warm_start_partial)
+        if verbose:
+            print(f"warm start from {warm_start}: {ws.describe()}"
+                  + ("; multipliers loaded" if ws.multipliers else ""))
+    folder = RunFolder(out_dir, force).open()
+    try:
+        solution = solve_into(problem, folder.stage, max_iter=max_iter, verbose=verbose,
+                              solve_options=solve_options)
+    except ResultWriteError:
+        folder.keep_incomplete()
+        raise
+    except BaseException:
+        folder.abort()
+        raise
+    solution.folder = folder.commit(solution.success, solution.status)
+    solution.moved_aside = folder.moved_aside
     return solution

@@ -24,7 +24,7 @@ def _cmd_plot(args) -> int:
         skipped.append(text)
         print(f"mdo plot: warning: {text}", file=sys.stderr)
 
-    made = render_run(run, warn=warn)
+    made = render_run(run, units=args.units, warn=warn)
     if not made:
         what = f"{len(skipped)} figure(s) skipped, see the warnings above" if skipped else \
             "ipopt.log, mission.csv, loading.csv, blade.csv"
@@ -36,8 +36,11 @@ def _cmd_plot(args) -> int:
 
 def register(sub):
     p = sub.add_parser("plot", help="render the figures of a run folder",
-                       description="Render mission profile, spanwise loading, rotor performance and IPOPT "
-                                   "convergence figures (PNG) into a run folder; a figure whose data is "
+                       description="Render mission profile, spanwise loading, rotor performance, geometry, "
+                                   "three-view and IPOPT convergence figures (PNG), convergence.csv, the design "
+                                   "checks and report.html into a run folder, from its files; a figure whose data is "
                                    "damaged is skipped with a one-line warning.")
     p.add_argument("run_dir", metavar="RUN_DIR", help="a run folder written by mdo run")
+    p.add_argument("--units", choices=("si", "aviation"), default="si",
+                   help="unit system of every figure: si (m, m/s, kN, kW) or aviation (ft, kt TAS/EAS, lbf, kW)")
     p.set_defaults(func=_cmd_plot)

@@ -1,4 +1,9 @@
-"""Render every figure a run folder has data for, from whatever of it is readable.
+"""Render every figure a run folder has data for, then its ``report.html``, from
+whatever of the folder is readable.
+
+Everything is drawn from the folder's files (``ipopt.log``, ``mission.csv``,
+``loading.csv``, ``blade.csv``, ``geometry.json`` ...), so ``mdo plot RUN_DIR`` redoes
+what the run wrote, in either unit system (``units="si"|"aviation"``).
 
 A run folder may be damaged (a killed run, a full disk, a hand edit): files empty,
 binary, truncated, missing columns, or not files at all (a FIFO named
@@ -11,13 +16,15 @@ are still drawn.
 """
 from __future__ import annotations
 
+import inspect
 import os
 import stat
 import sys
 from pathlib import Path
 
-from .convergence import plot_convergence
-from .figures import plot_loading, plot_mission, plot_rotor
+from .convergence import plot_convergence, write_convergence_csv
+from .figures import plot_loading, plot_mission, plot_rotor, run_title
+from .units import unit_system
 
 __all__ = ["render_run", "RENDERERS", "usable_input", "MAX_INPUT_BYTES", "register_renderer", "figure_report"]
 
@@ -90,33 +97,55 @@ def _optional(run: Path, name: str) -> Path | None:
         return None
 
 
-def _convergence(run: Path):
+def _convergence(run: Path, units="si"):
     log = _need(run, "ipopt.log")
-    return [plot_convergence(log, run / "convergence.png")] if log else []
+    if not log:
+        return []
+    write_convergence_csv(log, run / "convergence.csv")   # the table from the same lines as the figure
+    return [plot_convergence(log, run / "convergence.png")]
 
 
-def _mission(run: Path):
+def _mission(run: Path, units="si"):
     m = _need(run, "mission.csv")
-    return [plot_mission(m, run / "mission.png")] if m else []
+    return [plot_mission(m, run / "mission.png", units=units)] if m else []
 
 
-def _loading(run: Path):
+def _loading(run: Path, units="si"):
     d = _need(run, "loading.csv")
     if not d:
         return []
     base = _optional(run, str(Path("analysis") / "loading.csv"))
-    return [plot_loading(d, run / "loading.png", baseline=base)]
+    return [plot_loading(d, run / "loading.png", baseline=base, units=units)]
 
 
-def _rotor(run: Path):
+def _rotor(run: Path, units="si"):
     if not _need(run, "blade.csv"):
         return []
     if os.path.lexists(run / "mission.csv") and usable_input(run / "mission.csv") is not None:
         raise SkipFigure(f"mission.csv: {usable_input(run / 'mission.csv')}")
-    return [plot_rotor(run, run / "rotor.png")]
+    return [plot_rotor(run, run / "rotor.png", units=units)]
 
 
-RENDERERS = [_convergence, _mission, _loading, _rotor]
+def _geometry(run: Path, units="si"):
+    g = _need(run, "geometry.json")
+    if not g:
+        return []
+    from .geometry import plot_geometry, plot_planform, read_geometry
+    name = read_geometry(g).get("name", "")
+    base = _optional(run, str(Path("analysis") / "geometry.json"))
+    return [plot_geometry(g, run / "geometry.png", title=run_title(run, f"{name} geometry"), units=units),
+            plot_planform(g, run / "planform.png", baseline=base, units=units,
+                          title=run_title(run, f"{name} three-view" + (", baseline dashed" if base else "")))]
+
+
+def _checks(run: Path, units="si"):
+    if _need(run, "summary.json"):
+        from .checks import write_design_checks
+        write_design_checks(run)
+    return []
+
+
+RENDERERS = [_convergence, _mission, _loading, _rotor, _geometry, _checks]
 
 
 def figure_report(solution, out_dir):
@@ -125,7 +154,8 @@ def figure_report(solution, out_dir):
 
 
 def register_renderer(fn):
-    """Disciplines add figure makers ``fn(run_dir) -> [png paths]`` (empty if no data)."""
+    """Disciplines add figure makers ``fn(run_dir) -> [png paths]`` (empty if no data);
+    a ``units`` keyword, if ``fn`` has one, receives the unit system's name."""
     RENDERERS.append(fn)
     return fn
 
@@ -146,8 +176,8 @@ def _label(fn) -> str:
     return getattr(fn, "__name__", str(fn)).lstrip("_")
 
 
-def render_run(run_dir, warn=_warn) -> list:
-    """Draw every figure the folder has usable data for; returns the PNG paths made.
+def render_run(run_dir, units: str = "si", html: bool = True, warn=_warn) -> list:
+    """Every figure the folder has usable data for (paths), then ``report.html`` (with ``html``).
 
     Each figure maker runs on its own: an unusable input or a failure inside one
     (missing column, no rows, text where numbers belong) is one ``warn`` line naming
@@ -155,12 +185,16 @@ def render_run(run_dir, warn=_warn) -> list:
     import warnings
 
     run = Path(run_dir)
+    us = unit_system(units)
     made = []
-    for fn in RENDERERS:
+    for fn in list(RENDERERS) + ([_html] if html else []):
+        if fn is _html and not made:
+            break
         try:
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore")   # NumPy/matplotlib chatter on odd data: the warn line says it
-                made += fn(run)
+                takes_units = "units" in inspect.signature(fn).parameters
+                made += fn(run, units=us.name) if takes_units else fn(run)
         except SkipFigure as exc:
             warn(f"{_label(fn)} figure skipped: {exc}")
         except MemoryError:
@@ -168,3 +202,8 @@ def render_run(run_dir, warn=_warn) -> list:
         except Exception as exc:  # damaged data: skip this figure, keep the others
             warn(f"{_label(fn)} figure skipped: {_reason(exc)}")
     return made
+
+
+def _html(run: Path):
+    from .report_html import write_report_html
+    return [write_report_html(run)]

@@ -9,6 +9,8 @@ Public surface:
   energy used ``energy_used_J`` (E_EOF), mass (``pack.py``).
 * :class:`DCMotor`, :func:`size_dc_motor`, :func:`motor_mass_ndarc_kg` (``motor.py``).
 * :func:`esc_input_power_W` (``esc.py``).
+* :class:`PMSM`, :class:`Inverter`, :func:`size_pmsm`, :func:`size_inverter`, :func:`drive_node`
+  - loss-model PMSM and inverter (``pmsm.py``).
 * :class:`Powertrain` - the network at mission nodes: ``node_function`` (SX kernel),
   ``evaluate`` (mapped over nodes), ``limits``, ``add_to_problem`` (NLP mode),
   ``analyze`` / ``balance`` (numeric); :func:`paper_powertrain` for GA-2P, GA-8P, TTW
@@ -19,6 +21,8 @@ from .esc import ESC_EFFICIENCY, esc_input_power_W
 from .motor import DCMotor, motor_function, motor_mass_ndarc_kg, size_dc_motor
 from .network import (Bus, MotorGroup, NODE_INPUTS, NODE_OUTPUTS, PAPER_POWERTRAINS, Powertrain, paper_powertrain,
                       propeller_torque_law)
+from .pmsm import (PMSM, Inverter, drive_function, drive_node, plot_efficiency_map, size_inverter,
+                   size_pmsm)
 from .pack import PACKAGING_FACTOR_X57, Pack
 
 __all__ = [
@@ -28,4 +32,6 @@ __all__ = [
     "ESC_EFFICIENCY", "esc_input_power_W",
     "Bus", "MotorGroup", "Powertrain", "paper_powertrain", "PAPER_POWERTRAINS", "propeller_torque_law",
     "NODE_INPUTS", "NODE_OUTPUTS",
+    "PMSM", "Inverter", "size_pmsm", "size_inverter", "drive_node", "drive_function",
+    "plot_efficiency_map",
 ]

@@ -2,7 +2,8 @@
 inflow angle (Ning 2014), analysis mode with a bracketed solve, and the
 Adkins-Liebeck minimum-induced-loss design, all written once in CasADi."""
 from .geometry import RotorGeometry, station_layout, read_geometry_csv, write_geometry_csv
-from .sections import AnalyticSection, section, available_sections
+from .sections import (AnalyticSection, SpanwiseBlend, SpanwiseSections, RotationalAugmentation, section,
+                       available_sections, STALL_DELAY_MODELS)
 from .bemt import (
     bemt_function, station_physics, phi_momentum_guess, bemt_unknowns, add_bemt_nodes,
     azimuth_angles, inflow_components, INPUT_NAMES, NLP_OUTPUTS, FULL_OUTPUTS, PHI_MIN_RAD, PHI_MAX_RAD,
@@ -15,7 +16,8 @@ from .design import (
 
 __all__ = [
     "RotorGeometry", "station_layout", "read_geometry_csv", "write_geometry_csv",
-    "AnalyticSection", "section", "available_sections",
+    "AnalyticSection", "SpanwiseBlend", "SpanwiseSections", "RotationalAugmentation", "section",
+    "available_sections", "STALL_DELAY_MODELS",
     "bemt_function", "station_physics", "phi_momentum_guess", "bemt_unknowns", "add_bemt_nodes",
     "azimuth_angles", "inflow_components", "INPUT_NAMES", "NLP_OUTPUTS", "FULL_OUTPUTS", "PHI_MIN_RAD", "PHI_MAX_RAD",
     "analyze", "analyze_inputs", "sweep_J", "solve_phi", "RotorResult", "analysis_function", "operating_inputs",

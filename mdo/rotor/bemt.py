@@ -148,7 +148,12 @@ def station_physics(phi, r, chord, theta, vx, vy, rho, mu, a_sound, blades, r_ti
     w0 = lib.sqrt(vx * vx + vy * vy)
     reynolds = rho * w0 * chord / mu
     mach = w0 / a_sound
-    cl, cd = section_coefficients(sec, alpha, reynolds, mach, r / r_tip)
+    if getattr(sec, "rotational", False):     # stall delay needs c/r and Omega R / |V_tip|
+        vtip = vy * r_tip / r
+        cl, cd = section_coefficients(sec, alpha, reynolds, mach, r / r_tip, chord / r,
+                                      vtip / lib.sqrt(vx * vx + vtip * vtip))
+    else:
+        cl, cd = section_coefficients(sec, alpha, reynolds, mach, r / r_tip)
     cn = cl * cphi - cd * sphi
     ct = cl * sphi + cd * cphi
     acos = ca.acos if lib is ca else np.arccos

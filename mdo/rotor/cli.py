@@ -48,16 +48,17 @@ def _common(args) -> None:
 
 
 def _airfoil(text):
-    """The rotor's section: 'analytic', a shipped airfoil, or INNER:R_OVER_R:OUTER (a blend)."""
+    """The rotor's section spec: every airfoil name in it ('analytic', a shipped airfoil;
+    blends NAME:R_OVER_R:NAME[:R_OVER_R:NAME...], an optional +MODEL suffix) through the one
+    resolver; the rest is checked by ``mdo.rotor.sections.section``."""
     from ..airfoil.cli import resolve_airfoil
 
-    parts = str(text).split(":")
-    if len(parts) == 3:
-        x = parse_float("--airfoil", parts[1], 0.0, 1.0, "(blend station r/R)", lower_open=True, upper_open=True)
-        return f"{_airfoil(parts[0])}:{x:g}:{_airfoil(parts[2])}"
-    if str(text).strip().lower() == "analytic":
-        return "analytic"
-    return resolve_airfoil(text, "--airfoil")
+    base, plus, suffix = str(text).partition("+")
+    parts = base.split(":")
+    for i in range(0, len(parts), 2):
+        if parts[i].strip().lower() != "analytic":
+            parts[i] = resolve_airfoil(parts[i], "--airfoil")
+    return ":".join(parts) + plus + suffix
 
 
 def efficiency_or_none(eta, thrust_N, power_W) -> np.ndarray:

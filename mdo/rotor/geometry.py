@@ -176,6 +176,19 @@ class RotorGeometry:
         """Blade angle at 0.75 R (without the pitch offset)."""
         return float(self._interp(self.beta_rad, np.array([0.75]))[0])
 
+    def pitch_reference_offset_rad(self, nominal_pitch_m: float, at_r_over_R: float = 0.75) -> float:
+        """Collective offset [rad] that makes the geometric pitch ``2 pi r tan(beta)`` at
+        ``at_r_over_R`` equal a stated (e.g. the maker's quoted) pitch:
+        ``atan(P / (2 pi x R)) - beta(x)``.  Use with ``with_pitch`` when the tabulated
+        blade angles and the quoted pitch disagree (they refer to different lines)."""
+        if not (nominal_pitch_m > 0 and math.isfinite(nominal_pitch_m)):
+            raise InputError("nominal_pitch", f"must be a finite number > 0 m, got {nominal_pitch_m!r}")
+        if not (self.r_over_R[0] <= at_r_over_R <= self.r_over_R[-1]):
+            raise InputError("at_r_over_R", f"must lie in the geometry's range "
+                                            f"[{self.r_over_R[0]:g}, {self.r_over_R[-1]:g}], got {at_r_over_R}")
+        beta = float(self._interp(self.beta_rad, np.array([at_r_over_R]))[0])
+        return math.atan(nominal_pitch_m / (2.0 * math.pi * at_r_over_R * self.radius_m)) - beta
+
     def with_pitch(self, pitch_offset_rad: float) -> "RotorGeometry":
         return replace(self, pitch_offset_rad=float(pitch_offset_rad), _checked=False)
 

@@ -645,6 +645,10 @@ class Aircraft:
                                      scale=pk.max_cell_current_A, unit="A", row_labels=["cell current >= 0"]))
         margin = _num(nodes.parameters.get("stall_margin_cl", _row(self.stall_margin_cl, K))).ravel() * np.ones(K)
         cols = np.flatnonzero(margin >= 0.0)
+        if not self.design_point_constraints:
+            # a frozen design cannot change its span loading: its analysis holds the strips
+            # below cl_max itself (margin 0) and reports the margin it has (as the tip Mach)
+            margin = np.where(margin >= 0.0, 0.0, margin)
         expr, labels = stall_margin_rows(self.vlm, aero["vlm"], self.lifting_wings, self.strip_eta, env["rho"],
                                          env["V"], env["mu"], _row(margin), nodes.parameters.get(
                                              "flap_deflection", _row(0.0, K)), cols, exposed=self.strip_exposed)

@@ -221,7 +221,9 @@ class BatteryConfig:
     (``mdo.powertrain.Pack``) both read it.  ``packaging_factor`` multiplies the cell
     mass for casing, wiring, thermal management and BMS: 1.42, the module factor
     SUAVE derives from the X-57 Maxwell battery (Chin et al., AIAA SciTech 2019).
-    ``max_cell_current_A`` (8 A, the largest measured discharge) and
+    ``max_cell_current_A`` (10 A, the continuous rating of the Panasonic NCR18650GA
+    class of 3.4-3.5 Ah NMC cells, Panasonic data sheet; the measured curves the cell
+    model is fitted to reach 8 A, so 8-10 A is an extrapolation of the model) and
     ``min_cell_voltage_V`` (2.5 V, the measured cut-off) are the cell's operating
     limits; ``reserve_soc``: the state of charge that must remain at the end of the
     mission (after the reserve segments).
@@ -232,7 +234,7 @@ class BatteryConfig:
     cell_capacity_Ah: float = 3.55
     cell_nominal_V: float = 3.6
     packaging_factor: float = 1.42
-    max_cell_current_A: float = 8.0
+    max_cell_current_A: float = 10.0
     min_cell_voltage_V: float = 2.5
     reserve_soc: float = 0.2
     temperature_C: float = 25.0

@@ -8,7 +8,9 @@ Written after a solve by ``add_vehicle_reports``:
                  the geometry format ``mdo rotor sweep --geometry`` reads)
 ``design.json``  every design variable and the derived geometry (span, chords, rotor positions)
 ``energy.md``    where the energy goes per segment: battery, shaft, propulsive, drag, climb
-and ``geometry.png`` (3-D view of the lattice, rotor disks and fixed wakes).  The
+``geometry.json`` surfaces, fuselage, rotors and wake pitch as numbers, drawn by
+                 :mod:`mdo.plots.geometry` into ``geometry.png`` (3-D view)
+and the design checks (:mod:`mdo.plots.checks`) appended to ``summary.md``/``summary.json``.  The
 figures made from these files (loading, rotor, mission, convergence) belong to
 ``mdo.plots`` (``mdo plot RUN_DIR``), which problem files register after this report.
 """
@@ -26,7 +28,7 @@ from ..core import units as u
 from ..rotor.geometry import station_layout
 from .mass import MassDesign, mass_table_markdown
 
-__all__ = ["add_vehicle_reports", "cruise_node"]
+__all__ = ["add_vehicle_reports", "cruise_node", "write_geometry", "energy_breakdown"]
 
 
 def cruise_node(mission) -> int:
@@ -128,54 +130,66 @@ def _write_group_blade(gm, solution, path: Path):
     return R
 
 
-def _plot_geometry(vehicle, mission, solution, out: Path, k: int):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+def _fin_outline(w) -> dict:
+    """Leading and trailing edge (root, tip) of a vertical fin: linear taper, quarter-chord sweep."""
+    cr = w.root_chord_m
+    ct = cr * w.taper
+    x_le_tip = w.root_le_x_m + 0.25 * cr + w.span_m * math.tan(math.radians(w.sweep_quarter_chord_deg)) - 0.25 * ct
+    z = [w.root_z_m, w.root_z_m + w.span_m]
+    return {"name": w.name, "image": False, "vertical": True,
+            "le": [[w.root_le_x_m, x_le_tip], [0.0, 0.0], z], "te": [[w.root_le_x_m + cr, x_le_tip + ct], [0.0, 0.0], z]}
 
-    fig = plt.figure(figsize=(9, 6))
-    ax = fig.add_subplot(111, projection="3d")
-    for half in vehicle.vlm.outline():
-        le, te = _val(solution, half["le"]), _val(solution, half["te"])
-        poly = np.hstack([le, te[:, ::-1], le[:, :1]])
-        ax.plot(-poly[0], poly[1], poly[2], "k-", lw=0.8)
-        for j in range(le.shape[1]):
-            ax.plot([-le[0, j], -te[0, j]], [le[1, j], te[1, j]], [le[2, j], te[2, j]], color="0.6", lw=0.3)
+
+def _geometry_numbers(vehicle, mission, solution, k: int) -> dict:
+    """Everything ``geometry.png`` and ``planform.png`` need, as numbers (SI), so that
+    ``mdo plot`` redraws them from the run folder alone (format: :mod:`mdo.plots.geometry`)."""
+    surfaces = [{"name": h["surface"], "image": bool(h["image"]), "le": _val(solution, h["le"]).tolist(),
+                 "te": _val(solution, h["te"]).tolist()} for h in vehicle.vlm.outline()]
+    surfaces += [_fin_outline(w) for w in vehicle.config.wings if w.vertical]   # not in the lattice
     f = vehicle.config.fuselage
-    xs = np.linspace(0, f.length_m, 30)
-    rad = 0.5 * math.sqrt(f.width_m * f.height_m) * np.sqrt(np.clip(1 - ((xs - 0.4 * f.length_m) /
-                                                                        (0.6 * f.length_m)) ** 2, 0.02, 1))
-    for ang in np.linspace(0, 2 * np.pi, 9)[:-1]:
-        ax.plot(-xs, rad * np.cos(ang), vehicle.config.main_wing.root_z_m - 0.6 + rad * np.sin(ang), color="0.75",
-                lw=0.6)
-    R = float(_val(solution, vehicle.design["R"]))
-    bm = vehicle._last["bemt"]
+    # drawing assumption: the fuselage top at the highest wing root (high wings, tandem tilt-wings)
+    top_z = max(w.root_z_m for w in vehicle.lifting_wings)
     V = float(np.asarray(mission.cond.speed_mps)[0, k])
-    om = float(_val(solution, mission.unknowns[f"{vehicle.group.name}.omega"]).ravel()[k])
-    va = float(_val(solution, bm["va_mean_mps"]).ravel()[k])
-    pitch = 2 * math.pi * (V + va) / max(om, 1e-6)
-    t = np.linspace(0, 2 * math.pi, 60)
-    for rot in vehicle.rotors:
-        c = np.asarray([float(_val(solution, x)) for x in (rot.center if isinstance(rot.center, tuple)
-                                                            else [rot.center[i] for i in range(3)])])
-        ax.plot(-c[0] + 0 * t, c[1] + R * np.cos(t), c[2] + R * np.sin(t), "b-", lw=1.0)
-        tw = np.linspace(0, 3 * 2 * math.pi, 240)
-        for blade in range(vehicle.group.blades):
-            ph = tw * rot.spin + 2 * math.pi * blade / vehicle.group.blades
-            ax.plot(-(c[0] + pitch * tw / (2 * math.pi)), c[1] + R * np.cos(ph), c[2] + R * np.sin(ph),
-                    color="tab:red", lw=0.4, alpha=0.6)
-    ax.set_xlabel("-x (m)")
-    ax.set_ylabel("y (m)")
-    ax.set_zlabel("z (m)")
-    lim = 0.55 * max(float(_val(solution, w["span"])) for w in vehicle.design["wings"].values())
-    ax.set_xlim(-lim * 1.6, lim * 0.4)
-    ax.set_ylim(-lim, lim)
-    ax.set_zlim(-lim * 0.5, lim * 0.5)
-    ax.view_init(elev=25, azim=-130)
-    ax.set_title(f"{vehicle.name}: lattice, rotor disks and fixed wakes (3 turns at mid-cruise)")
-    fig.tight_layout()
-    fig.savefig(out / "geometry.png", dpi=110)
-    plt.close(fig)
+    rotors, pitch0 = [], None
+    for gm in vehicle.groups:
+        R = float(_val(solution, gm.design["R"]))
+        om = float(_val(solution, mission.unknowns[f"{gm.name}.omega"]).ravel()[k])
+        va = float(_val(solution, vehicle._last["rotors"][gm.name]["bemt"]["va_mean_mps"]).ravel()[k])
+        # helix pitch of the fixed wake: (V + mean induced axial velocity) per revolution
+        pitch = 2 * math.pi * (V + va) / max(om, 1e-6)
+        pitch0 = pitch if pitch0 is None else pitch0
+        for rot in vehicle.group_rotors[gm.name]:
+            c = rot.center if isinstance(rot.center, tuple) else [rot.center[i] for i in range(3)]
+            rotors.append({"group": gm.name, "center_m": [float(_val(solution, x)) for x in c], "radius_m": R,
+                           "spin": float(rot.spin), "blades": int(gm.config.blades), "pitch_m": pitch,
+                           "axis": [float(a) for a in np.asarray(rot.axis, float).ravel()]})
+    return {"name": vehicle.name, "surfaces": surfaces,
+            "fuselage": {"length_m": f.length_m, "width_m": f.width_m, "height_m": f.height_m, "nose_x_m": 0.0,
+                         "axis_z_m": top_z - 0.5 * f.height_m},
+            "rotors": rotors, "blades": int(vehicle.groups[0].config.blades),   # the group of blade.csv
+            "wake": {"pitch_m": pitch0, "node": int(k), "speed_mps": V},
+            "reference_area_m2": float(_val(solution, vehicle.S_ref)),
+            "reference_chord_m": vehicle.config.main_wing.mean_aerodynamic_chord_m}
+
+
+def write_geometry(vehicle, mission, solution, out: Path, k: int | None = None) -> Path:
+    """``geometry.json`` at node ``k`` (mid-cruise by default) and ``geometry.png`` from it."""
+    from ..plots.figures import run_title
+    from ..plots.geometry import plot_geometry
+    k = cruise_node(mission) if k is None else k
+    path = Path(out) / "geometry.json"
+    path.write_text(json.dumps(_geometry_numbers(vehicle, mission, solution, k), indent=1))
+    plot_geometry(path, Path(out) / "geometry.png", title=run_title(out, f"{vehicle.name} geometry"))
+    return path
+
+
+def _efficiency(out_kwh: float, in_kwh: float) -> str:
+    """out/in to 3 decimals, or "—" where it is no efficiency: energy flowing backwards
+    (windmilling, regeneration: out or in <= 0; 1 Wh threshold for quadrature noise), or
+    a ratio above 1, which only a segment that mixes forward and backward flow gives."""
+    from ..plots.units import DASH
+    ok = out_kwh > 1e-3 and in_kwh > 1e-3 and out_kwh <= in_kwh
+    return f"{out_kwh / in_kwh:.3f}" if ok else DASH
 
 
 def energy_breakdown(vehicle, mission, solution) -> str:
@@ -183,6 +197,7 @@ def energy_breakdown(vehicle, mission, solution) -> str:
     losses) -> propulsive work (propeller efficiency) -> drag work (induced, parasite)
     + potential + kinetic energy.  Integrals by each segment's Clenshaw-Curtis weights."""
     from ..core.collocation import Collocation
+    from ..plots.units import DASH
     ev = mission.evaluation.outputs
     rows = {k: np.asarray(solution.value(ev[k].expr), float).ravel()
             for k in ("battery_power_W", "shaft_power_W", "thrust_power_W", "drag_N", "induced_drag_N",
@@ -206,14 +221,16 @@ def energy_breakdown(vehicle, mission, solution) -> str:
                       w @ (rows["parasite_drag_N"][idx] * V[idx]),
                       m * g0 * (h[idx][-1] - h[idx][0]), 0.5 * m * (V[idx][-1] ** 2 - V[idx][0] ** 2)]) / u.KWH
         tot += e
-        eff = lambda a, b: f"{a / b:.3f}" if abs(b) > 1e-6 else "-"  # noqa: E731
         lines.append(f"| {sg.segment.name} | {T:.0f} | " + " | ".join(f"{x:.3f}" for x in e)
-                     + f" | {eff(e[1], e[0])} | {eff(e[2], e[1])} |")
+                     + f" | {_efficiency(e[1], e[0])} | {_efficiency(e[2], e[1])} |")
     lines.append("| **total** | | " + " | ".join(f"**{x:.3f}**" for x in tot)
-                 + f" | {tot[1] / tot[0]:.3f} | {tot[2] / tot[1]:.3f} |")
+                 + f" | {_efficiency(tot[1], tot[0])} | {_efficiency(tot[2], tot[1])} |")
     lines += ["", f"Check: propulsive = drag + potential + kinetic to "
               f"{abs(tot[2] - tot[3] - tot[4] - tot[5] - tot[6]) / max(abs(tot[2]), 1e-9) * 100:.2f} % "
-              "(the rest is the in-plane rotor force and quadrature).", ""]
+              "(the rest is the in-plane rotor force and quadrature).",
+              f"Efficiencies are {DASH} where energy flows backwards (shaft or battery energy <= 0: "
+              "windmilling or regeneration) or the ratio exceeds 1 (a segment mixing both), where it is no "
+              "efficiency.", ""]
     return "\n".join(lines)
 
 
@@ -234,6 +251,9 @@ def add_vehicle_reports(problem, vehicle, mission):
         (out / "energy.md").write_text(energy_breakdown(vehicle, mission, solution))
         k = _write_loading(vehicle, mission, solution, out)
         _write_blade(vehicle, solution, out)
-        _plot_geometry(vehicle, mission, solution, out, k)
+        write_geometry(vehicle, mission, solution, out, k)
+        from ..plots.checks import write_design_checks
+        write_design_checks(out)
 
+    vehicle_report.vehicle, vehicle_report.mission = vehicle, mission   # for tools that redo one file
     problem.add_report(vehicle_report)

@@ -1,0 +1,124 @@
+"""Design checks: is the design inside usual practice?  Read from the run folder's files.
+
+An optimizer happily returns a 4 cm blade chord on a 2 m propeller if nothing in the
+model penalizes it; these checks flag such a design for the designer (they are not
+constraints).  Each range with its basis:
+
+* blade chord at 0.75 R, ``c/R`` in [0.05, 0.30] (``blade.csv``): below 0.05 a blade is
+  a strip (4 cm on a 2 m propeller: low chord Reynolds number, no room for a spar);
+  above 0.30 it is wider than paddle blades (a range stated by issue #23, not a source).
+* solidity at 0.75 R, ``sigma = B c / (pi R)`` in [0.03, 0.25]: helicopter main rotors
+  have 0.05-0.12 (Leishman, *Principles of Helicopter Aerodynamics*, 2nd ed., 2006);
+  a two-blade propeller at c/R 0.05 has 0.032, a six-blade turboprop at c/R 0.13 has 0.25.
+* tip Mach number <= 0.70 over the mission (``mission.csv``): beyond it the tip sections
+  of usual propeller airfoils approach their drag-divergence Mach number and the noise
+  rises steeply; the paper's design point is bounded at 0.6 (the problems' ``tip_mach_max``).
+* wing loading ``W/S`` in [50, 2000] N/m^2 (``design.json`` TOGW, ``geometry.json``
+  reference area): Raymer, *Aircraft Design: A Conceptual Approach*, Table 5.5 (typical
+  take-off wing loadings) runs from 6 lb/ft^2 (290 N/m^2, sailplanes) to 40 lb/ft^2
+  (1900 N/m^2, twin turboprops); below 50 N/m^2 are human-powered aircraft.
+"""
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+
+from ..core.units import G0
+
+__all__ = ["CHECKS", "design_checks", "write_design_checks", "checks_markdown"]
+
+# quantity: (low, high, unit, basis) — see the module docstring for the sources
+CHECKS = {
+    "blade chord c/R at 0.75 R": (0.05, 0.30, "-", "strip below 0.05, paddle above 0.30"),
+    "solidity B c/(pi R) at 0.75 R": (0.03, 0.25, "-", "rotors 0.05-0.12 (Leishman 2006), turboprops to 0.25"),
+    "maximum tip Mach number": (0.0, 0.70, "-", "drag divergence and noise of the tip sections"),
+    "wing loading W/S": (50.0, 2000.0, "N/m^2", "Raymer Table 5.5: 290 (sailplane) - 1900 (twin turboprop)"),
+}
+
+
+def _json(path: Path):
+    try:
+        return json.loads(path.read_text())
+    except (OSError, ValueError):
+        return None
+
+
+def _values(run: Path) -> dict:
+    """The checked quantities the folder's files give (missing files: quantity absent)."""
+    from .figures import read_csv
+    v = {}
+    geom = _json(run / "geometry.json") or {}
+    if (run / "blade.csv").exists():
+        b = read_csv(run / "blade.csv")
+        c75 = float(np.interp(0.75, b["r_over_R"], b["c_over_R"]))
+        v["blade chord c/R at 0.75 R"] = c75
+        if "blades" in geom:
+            v["solidity B c/(pi R) at 0.75 R"] = geom["blades"] * c75 / math.pi
+    if (run / "mission.csv").exists():
+        m = read_csv(run / "mission.csv")
+        if "tip_mach" in m:
+            v["maximum tip Mach number"] = float(np.nanmax(m["tip_mach"]))
+    design = _json(run / "design.json") or {}
+    if "togw_kg" in design and geom.get("reference_area_m2"):
+        v["wing loading W/S"] = design["togw_kg"] * G0 / geom["reference_area_m2"]
+    return v
+
+
+def design_checks(run_dir) -> list[dict]:
+    """One dict per quantity the folder gives: quantity, value, low, high, unit, basis, ok,
+    and a one-line ``message``."""
+    out = []
+    for q, val in _values(Path(run_dir)).items():
+        lo, hi, unit, basis = CHECKS[q]
+        ok = bool(lo <= val <= hi)
+        where = "inside" if ok else ("below" if val < lo else "above")
+        out.append({"quantity": q, "value": val, "low": lo, "high": hi, "unit": unit, "basis": basis, "ok": ok,
+                    "message": f"{q} = {val:.4g}{'' if unit == '-' else ' ' + unit} is {where} usual practice "
+                               f"[{lo:g}, {hi:g}] ({basis})"})
+    return out
+
+
+def checks_markdown(checks: list[dict]) -> str:
+    """The '## Design checks' section of summary.md."""
+    lines = ["## Design checks (usual practice; see mdo/plots/checks.py for the sources)", ""]
+    if not checks:
+        return "\n".join(lines + ["no checkable quantity in this run folder", ""])
+    warn = [c for c in checks if not c["ok"]]
+    for c in warn:
+        lines.append(f"- **warning**: {c['message']}")
+    if warn:
+        lines.append("")
+    lines += ["| quantity | value | usual range | unit | basis |", "|---|---:|---|---|---|"]
+    for c in checks:
+        flag = "" if c["ok"] else " **(outside)**"
+        lines.append(f"| {c['quantity']} | {c['value']:.4g}{flag} | {c['low']:g} - {c['high']:g} | {c['unit']} "
+                     f"| {c['basis']} |")
+    return "\n".join(lines + [""])
+
+
+_HEAD = "## Design checks"
+
+
+def write_design_checks(run_dir) -> list[dict]:
+    """Put the checks into ``summary.md`` (replacing an earlier section, so that running it
+    twice changes nothing) and ``summary.json`` (``design_checks``, ``design_warnings``)."""
+    run = Path(run_dir)
+    checks = design_checks(run)
+    if not checks:   # nothing to check (a fixed-polar vehicle has no blade, rotor or geometry files)
+        return checks
+    md = run / "summary.md"
+    if md.exists():
+        text = md.read_text()
+        if _HEAD in text:
+            text = text[:text.index(_HEAD)].rstrip() + "\n"
+        md.write_text(text.rstrip() + "\n\n" + checks_markdown(checks))
+    sj = run / "summary.json"
+    s = _json(sj)
+    if s is not None:
+        s["design_checks"] = checks
+        s["design_warnings"] = [c["message"] for c in checks if not c["ok"]]
+        sj.write_text(json.dumps(s, indent=1))
+    return checks

@@ -1,0 +1,222 @@
+"""Shared machinery of the APC Thin Electric validations (10x7 and 19x12) against the
+UIUC wind-tunnel data (Brandt & Selig, AIAA 2011-1255; files in mdo/rotor/data/).
+
+One model for both propellers, decided before comparing with data and applied
+identically (nothing is fitted per propeller):
+
+* sections: APC's stated practice for thin-electric props, the low-Re Eppler E63
+  inboard blended into a Clark-Y-like section outboard (apcprop.com, Technical
+  information / Engineering), change at mid-blade (r/R 0.5);
+* rotational augmentation (stall delay) of Du & Selig (AIAA 98-0021), see
+  ``mdo.rotor.RotationalAugmentation``;
+* blade angles referenced to the maker's quoted pitch: a collective offset makes
+  the geometric pitch at 0.75 R equal the nominal pitch (10x**7**, 19x**12** in),
+  ``RotorGeometry.pitch_reference_offset_rad``.  The UIUC tables give P(0.75 R) =
+  7.09 in for the 10x7 (offset -0.19 deg) but 11.0 in for the 19x12 (+1.20 deg):
+  the two tables do not refer the blade angle to the same line;
+* 20 cosine-spaced stations, Prandtl tip and hub losses, hub at the first geometry
+  station, sea-level USSA76 air.
+
+The "baseline" rows reproduce the model before issue 18 (same sections, no stall
+delay, tabulated blade angles) for comparison.  Sensitivities: the section's
+zero-lift angle +-1 deg (a collective -+1 deg: alpha - alpha0 is what the
+attached section sees), and the transition setting Ncrit 5 vs 9 (both sections
+regenerated with NeuralFoil at that Ncrit, ``mdo.airfoil.generate``; needs the
+optional package, otherwise the rows say so).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from mdo.rotor import RotorGeometry, analyze
+from mdo.rotor.geometry import DATA_DIR
+
+INCH_M = 0.0254
+SECTIONS = "e63:0.5:clark_y"
+STALL_DELAY = "du_selig"
+AIRFOIL = f"{SECTIONS}+{STALL_DELAY}"
+BASELINE_AIRFOIL = SECTIONS
+NCRIT_AIRFOILS = {5: "e63@ncrit=5:0.5:clarky@ncrit=5+du_selig", 9: "e63@ncrit=9:0.5:clarky@ncrit=9+du_selig"}
+N_STATIONS = 20
+J_LIMIT = 0.7
+OUT_DIR = Path(__file__).resolve().parents[2] / "results" / "validation"
+
+
+@dataclass(frozen=True)
+class Prop:
+    key: str                 # file stem: apce_<key>_*.csv
+    title: str
+    diameter_in: float
+    pitch_in: float
+    blades: int = 2
+
+    @property
+    def diameter_m(self) -> float:
+        return self.diameter_in * INCH_M
+
+    def data(self, kind: str) -> np.ndarray:
+        return np.genfromtxt(DATA_DIR / f"apce_{self.key}_{kind}.csv", delimiter=",", names=True)
+
+    def rotor(self, airfoil: str = AIRFOIL, pitch_reference: bool = True) -> RotorGeometry:
+        rot = RotorGeometry.from_csv(DATA_DIR / f"apce_{self.key}_geometry.csv", diameter_m=self.diameter_m,
+                                     blades=self.blades, airfoil=airfoil, name=f"apce_{self.key}")
+        if pitch_reference:
+            rot = rot.with_pitch(rot.pitch_reference_offset_rad(self.pitch_in * INCH_M))
+        return rot
+
+
+def run(prop: Prop, airfoil: str = AIRFOIL, pitch_reference: bool = True, extra_pitch_deg: float = 0.0) -> dict:
+    """BEMT at every measured (rpm, J) and every static rpm; relative errors."""
+    rot = prop.rotor(airfoil, pitch_reference)
+    pitch = rot.pitch_offset_rad + math.radians(extra_pitch_deg)
+    d, st = prop.data("performance"), prop.data("static")
+    n = d["rpm"] / 60.0
+    res = analyze(rot, omega_radps=2 * math.pi * n, v_axial_mps=d["J"] * n * prop.diameter_m,
+                  n_stations=N_STATIONS, pitch_rad=pitch)
+    rs = analyze(rot, omega_radps=2 * math.pi * st["rpm"] / 60.0, v_axial_mps=0.0, n_stations=N_STATIONS,
+                 pitch_rad=pitch)
+    return {"rotor": rot, "data": d, "static": st, "res": res, "res_static": rs,
+            "eCT": res["CT"] / d["CT"] - 1, "eCP": res["CP"] / d["CP"] - 1,
+            "eCT0": rs["CT"] / st["CT"] - 1, "eCP0": rs["CP"] / st["CP"] - 1}
+
+
+def table(m: dict) -> dict:
+    """Mean / max |error| for J <= J_LIMIT: all points, per rpm (each UIUC run), static."""
+    d = m["data"]
+    sel = d["J"] <= J_LIMIT
+    rows = {"all": sel}
+    for rpm in np.unique(d["rpm"]):
+        rows[f"{int(rpm)} rpm"] = sel & (d["rpm"] == rpm)
+    out = {}
+    for k, s in rows.items():
+        out[k] = {"points": int(s.sum()),
+                  "CT_mean": float(np.mean(np.abs(m["eCT"][s]))), "CT_max": float(np.max(np.abs(m["eCT"][s]))),
+                  "CP_mean": float(np.mean(np.abs(m["eCP"][s]))), "CP_max": float(np.max(np.abs(m["eCP"][s])))}
+    out["static"] = {"points": int(m["static"].size),
+                     "CT_mean": float(np.mean(np.abs(m["eCT0"]))), "CT_max": float(np.max(np.abs(m["eCT0"]))),
+                     "CP_mean": float(np.mean(np.abs(m["eCP0"]))), "CP_max": float(np.max(np.abs(m["eCP0"])))}
+    return out
+
+
+def _bias(m: dict) -> tuple:
+    sel = m["data"]["J"] <= J_LIMIT
+    return (float(np.mean(m["eCT"][sel])), float(np.mean(m["eCP"][sel])),
+            float(np.mean(m["eCT0"])), float(np.mean(m["eCP0"])))
+
+
+def sensitivities(prop: Prop) -> list:
+    """Rows (label, mean bias CT, CP for J <= 0.7, static CT, CP) for the uncertainty table."""
+    rows = [("model", *_bias(run(prop)))]
+    for da0 in (-1.0, 1.0):
+        # alpha0 -> alpha0 + da0 is, in attached flow, a collective of -da0
+        rows.append((f"zero-lift angle {da0:+.0f} deg", *_bias(run(prop, extra_pitch_deg=-da0))))
+    for nc, af in NCRIT_AIRFOILS.items():
+        try:
+            rows.append((f"sections regenerated, Ncrit {nc} (NeuralFoil)", *_bias(run(prop, airfoil=af))))
+        except Exception as exc:   # the optional generator is missing: say so in the table
+            rows.append((f"sections regenerated, Ncrit {nc}: not available ({exc})",) + (float("nan"),) * 4)
+    rows.append(("no stall delay", *_bias(run(prop, airfoil=SECTIONS))))
+    rows.append(("tabulated blade angles (no pitch reference)", *_bias(run(prop, pitch_reference=False))))
+    return rows
+
+
+def write_outputs(prop: Prop, out_dir: Path = OUT_DIR, with_sensitivity: bool = True) -> dict:
+    """Figure, per-point errors, static table and the markdown summary of one propeller."""
+    out_dir.mkdir(parents=True, exist_ok=True)
+    main, base = run(prop), run(prop, BASELINE_AIRFOIL, pitch_reference=False)
+    t, tb = table(main), table(base)
+    d, res, st, rs = main["data"], main["res"], main["static"], main["res_static"]
+    assert res.converged.all() and rs.converged.all(), "BEMT residual not converged at some data point"
+    stem = f"apc{prop.key}"
+    with open(out_dir / f"{stem}_errors.csv", "w") as f:
+        f.write("rpm,J,CT_data,CT_model,CT_rel_err,CP_data,CP_model,CP_rel_err,eta_data,eta_model,"
+                "CT_baseline,CP_baseline,residual_max\n")
+        for i in range(d.size):
+            f.write(f"{int(d['rpm'][i])},{d['J'][i]:.4f},{d['CT'][i]:.5f},{res['CT'][i]:.5f},{main['eCT'][i]:.4f},"
+                    f"{d['CP'][i]:.5f},{res['CP'][i]:.5f},{main['eCP'][i]:.4f},{d['eta'][i]:.4f},"
+                    f"{res['eta'][i]:.4f},{base['res']['CT'][i]:.5f},{base['res']['CP'][i]:.5f},"
+                    f"{res.residual_max[i]:.2e}\n")
+    with open(out_dir / f"{stem}_static.csv", "w") as f:
+        f.write("rpm,CT_data,CT_model,CT_rel_err,CP_data,CP_model,CP_rel_err,FM_model,CT_baseline,CP_baseline\n")
+        for i in range(st.size):
+            f.write(f"{int(st['rpm'][i])},{st['CT'][i]:.4f},{rs['CT'][i]:.5f},{main['eCT0'][i]:.4f},"
+                    f"{st['CP'][i]:.4f},{rs['CP'][i]:.5f},{main['eCP0'][i]:.4f},{rs['FM'][i]:.4f},"
+                    f"{base['res_static']['CT'][i]:.5f},{base['res_static']['CP'][i]:.5f}\n")
+    _figure(prop, main, t, out_dir / f"{stem}.png")
+    rot = main["rotor"]
+    lines = [f"# {prop.title}: BEMT vs UIUC wind-tunnel data", "",
+             f"Model: sections `{AIRFOIL}` (E63 inboard, Clark-Y outboard, Du-Selig stall delay), blade angles "
+             f"referenced to the quoted {prop.pitch_in:g} in pitch at 0.75 R (collective "
+             f"{math.degrees(rot.pitch_offset_rad):+.2f} deg on the UIUC table), {N_STATIONS} stations, sea level "
+             f"(`problems/validation/apc_common.py`). Relative errors (model - data)/data; J <= {J_LIMIT} "
+             "and the static runs.", "",
+             "| runs | points | CT mean abs err | CT max | CP mean abs err | CP max | baseline CT mean | baseline CP mean |",
+             "|---|---|---|---|---|---|---|---|"]
+    for k, v in t.items():
+        b = tb[k]
+        lines.append(f"| {k} | {v['points']} | {100 * v['CT_mean']:.1f} % | {100 * v['CT_max']:.1f} % | "
+                     f"{100 * v['CP_mean']:.1f} % | {100 * v['CP_max']:.1f} % | {100 * b['CT_mean']:.1f} % | "
+                     f"{100 * b['CP_mean']:.1f} % |")
+    lines += ["", f"Baseline = the model before issue 18 (`{BASELINE_AIRFOIL}`, no stall delay, tabulated blade "
+                  "angles).", f"Largest BEMT residual over all points: {res.residual_max.max():.1e}."]
+    if with_sensitivity:
+        lines += ["", "## Uncertainty: what a section choice is worth", "",
+                  "Mean signed error (bias) of the model with one input changed:", "",
+                  "| variant | CT bias J<=0.7 | CP bias J<=0.7 | static CT bias | static CP bias |", "|---|---|---|---|---|"]
+        for row in sensitivities(prop):
+            lines.append(f"| {row[0]} | " + " | ".join(f"{100 * v:+.1f} %" for v in row[1:]) + " |")
+    lines += ["", f"Files: {stem}.png, {stem}_errors.csv (every point), {stem}_static.csv."]
+    (out_dir / f"{stem}_summary.md").write_text("\n".join(lines) + "\n")
+    return {"table": t, "baseline": tb}
+
+
+def _figure(prop: Prop, main: dict, t: dict, path: Path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    d, rot = main["data"], main["rotor"]
+    fig, ax = plt.subplots(1, 3, figsize=(15, 4.6))
+    rpms = np.unique(d["rpm"])
+    colors = plt.cm.viridis(np.linspace(0, 0.9, rpms.size))
+    Jf = np.linspace(0.0, 0.9, 91)
+    for c, rpm in zip(colors, rpms):
+        s = d["rpm"] == rpm
+        r = analyze(rot, omega_radps=np.full(Jf.size, 2 * math.pi * rpm / 60),
+                    v_axial_mps=Jf * rpm / 60 * prop.diameter_m, n_stations=N_STATIONS)
+        curves = {"CT": r["CT"], "CP": r["CP"], "eta": np.where((r["CT"] > 0) & (r["CP"] > 0), r["eta"], np.nan)}
+        for k, key in enumerate(("CT", "CP", "eta")):
+            ax[k].plot(Jf, curves[key], "-", color=c, lw=1.2, label=f"{int(rpm)} rpm" if k == 0 else None)
+            ax[k].plot(d["J"][s], d[key][s], "o", color=c, ms=3.5, mfc="none")
+    st, rs = main["static"], main["res_static"]
+    ax[0].plot(np.zeros(st.size), st["CT"], "k+", ms=6, label="static runs")
+    ax[1].plot(np.zeros(st.size), st["CP"], "k+", ms=6)
+    ax[0].plot([0.0], [np.mean(rs["CT"])], "kx", ms=7)
+    ax[1].plot([0.0], [np.mean(rs["CP"])], "kx", ms=7)
+    for k, (key, lab) in enumerate((("CT", "$C_T$"), ("CP", "$C_P$"), ("eta", r"$\eta$"))):
+        ax[k].set_xlabel("J")
+        ax[k].set_ylabel(lab)
+        ax[k].grid(alpha=0.3)
+        ax[k].axvline(J_LIMIT, color="0.6", ls=":", lw=1)
+    ax[2].set_ylim(0, 0.9)
+    ax[0].legend(fontsize=8, title="lines: BEMT, circles: UIUC")
+    a, s0 = t["all"], t["static"]
+    fig.suptitle(f"{prop.title}, BEMT (E63/Clark-Y, Du-Selig) vs UIUC; J <= {J_LIMIT}: mean |err| CT "
+                 f"{100 * a['CT_mean']:.1f} %, CP {100 * a['CP_mean']:.1f} %; static CT {100 * s0['CT_mean']:.1f} %, "
+                 f"CP {100 * s0['CP_mean']:.1f} %", fontsize=11)
+    fig.tight_layout()
+    fig.savefig(path, dpi=130)
+    plt.close(fig)
+
+
+def print_table(t: dict, tb: dict | None = None):
+    for k, v in t.items():
+        line = (f"{k:>10}: CT mean {100 * v['CT_mean']:5.1f} % max {100 * v['CT_max']:5.1f} %   "
+                f"CP mean {100 * v['CP_mean']:5.1f} % max {100 * v['CP_max']:5.1f} %")
+        if tb is not None:
+            line += f"   (baseline CT {100 * tb[k]['CT_mean']:5.1f} %, CP {100 * tb[k]['CP_mean']:5.1f} %)"
+        print(line)
