@@ -10,7 +10,8 @@ be written (report printed, log and last iterate kept), 2 bad input or a
 file-system error before the solve (one line naming the field or path; ``--debug``
 for the traceback), 130 / 143 interrupted by SIGINT / SIGTERM (last iterate kept
 when a solve was running).  ``mdo check RUN_DIR``: 0 within limits, 1 a limit
-exceeded, 2 an unreadable folder.
+exceeded, 2 an unreadable folder; 141 output pipe closed by its reader (no traceback).
+``mdo --version`` prints the version; ``mdo run FILE --options`` the problem's options.
 """
 from __future__ import annotations
 
@@ -19,13 +20,14 @@ import contextlib
 import importlib
 import json
 import os
+import re
 import signal
 import sys
 import time
 import traceback
 from pathlib import Path
 
-from .core.errors import InputError
+from .core.errors import InputError, parse_int
 
 _DISCIPLINE_CLIS = (
     "mdo.airfoil.cli",
@@ -39,16 +41,40 @@ _DISCIPLINE_CLIS = (
 
 
 def _parse_option(text: str):
+    """``KEY=VALUE`` -> (key, value), VALUE read as JSON when it is JSON (4, 2.5, true,
+    "text"), else kept as text; the type and range are checked against the problem's
+    ``build()`` (``mdo.nlp.options``).  NaN and Infinity, which Python's JSON reads, are
+    kept as text so that a number option refuses them by name."""
     if "=" not in text:
-        raise InputError("--option", f"expected KEY=VALUE, got {text!r}")
+        raise InputError("-o", f"expected KEY=VALUE, got {text!r}")
     key, value = text.split("=", 1)
+    if not key.strip():
+        raise InputError("-o", f"expected KEY=VALUE with a non-empty KEY, got {text!r}")
     try:
-        value = json.loads(value)
-    except json.JSONDecodeError:
+        value = json.loads(value, parse_constant=lambda c: c)
+    except (json.JSONDecodeError, RecursionError):
         pass
     return key.strip(), value
 
 
+class _Parser(argparse.ArgumentParser):
+    """argparse with one-line errors (``mdo ...: error: ...``, exit 2, like every other bad
+    input) and negative numbers as values: ``--y -1:1:0.25``, ``--x -1e-3``."""
+
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, **kwargs)
+        # a token starting "-<digit>" or "-.<digit>" is a value, never an option (no mdo
+        # option looks like a number); argparse's own pattern knows only -1 and -1.5
+        self._negative_number_matcher = re.compile(r"^-\.?\d")
+
+    def error(self, message):
+        self.exit(2, f"{self.prog}: error: {message} (see {self.prog} -h)\n")
+
+
+def _cmd_options(args) -> int:
+    from .nlp.options import describe_options
+    print(describe_options(args.problem))
+    return 0
 class Terminated(KeyboardInterrupt):
     """SIGTERM outside a solve (``timeout``, job schedulers): stop like Ctrl-C, exit 143."""
 
@@ -77,8 +103,10 @@ def _cmd_run(args) -> int:
     from .nlp.problem import WarmStartError, read_solution
     from .nlp.run import ResultWriteError, RunError, RunFolder, default_out_dir
 
-    if args.max_iter is not None and args.max_iter < 0:
-        raise InputError("--max-iter", f"must be >= 0, got {args.max_iter}")
+    if args.options:
+        return _cmd_options(args)
+    if args.max_iter is not None:
+        args.max_iter = parse_int("--max-iter", args.max_iter, 0, 100000)
     options = dict(_parse_option(o) for o in (args.option or []))
     out = Path(args.out or default_out_dir(args.problem, analysis=args.analysis))
     ws_data = None
@@ -187,16 +215,19 @@ def _cmd_check(args) -> int:
 
 
 def build_parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(
+    from . import __version__
+
+    parser = _Parser(
         prog="mdo", description="Whole-mission design optimization of propeller-driven aircraft.")
     parser.add_argument("--debug", action="store_true", help="show tracebacks on errors")
+    parser.add_argument("--version", action="version", version=f"mdo {__version__}")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND")
 
     run = sub.add_parser("run", help="solve a problem file (build(**options) -> Problem)",
                          description="Solve a problem file and write its run folder.")
     run.add_argument("problem", help="path to a problem file, e.g. problems/ga2p.py")
     run.add_argument("--out", help="run folder (default results/<problem>/, or .../analysis/)")
-    run.add_argument("--max-iter", type=int, help="IPOPT iteration limit")
+    run.add_argument("--max-iter", metavar="N", help="IPOPT iteration limit, an integer in [0, 100000]")
     run.add_argument("--warm-start", metavar="FILE",
                      help="solution.json of an earlier run of the same problem (checked: problem name, "
                           "variable names and sizes, finite values; multipliers used when it fits fully)")
@@ -213,7 +244,10 @@ def build_parser() -> argparse.ArgumentParser:
                      help="replace an existing run folder: once the new run is complete the old one is "
                           "moved to OUT.old-<timestamp> (never deleted, never mixed)")
     run.add_argument("--option", "-o", action="append", metavar="KEY=VALUE",
-                     help="keyword passed to build(); VALUE parsed as JSON when it can be")
+                     help="keyword passed to build(); VALUE parsed as JSON when it can be, checked against "
+                          "the option's type and range (list them with --options)")
+    run.add_argument("--options", action="store_true",
+                     help="list the problem's options (type, default, allowed values, documentation) and exit")
     run.add_argument("--quiet", action="store_true", help="no IPOPT log on the terminal (still in the file)")
     run.add_argument("--hessian", choices=("exact", "limited-memory"), default="exact",
                      help="exact Hessian of the Lagrangian (default) or IPOPT's L-BFGS approximation")
@@ -259,7 +293,11 @@ def _main(argv=None) -> int:
         return 2
     from .nlp.run import ResultWriteError, RunError
     try:
-        return int(args.func(args) or 0)
+        code = int(args.func(args) or 0)
+        sys.stdout.flush()   # a closed pipe shows here, not as an error at interpreter exit
+        return code
+    except BrokenPipeError:   # before OSError, of which it is one
+        return _closed_pipe()
     except ResultWriteError as exc:   # the solve ran; its files could not be written
         if args.debug:
             traceback.print_exc()
@@ -281,6 +319,17 @@ def _main(argv=None) -> int:
         sig, code = ("SIGTERM", 143) if isinstance(exc, Terminated) else ("SIGINT", 130)
         print(f"mdo: interrupted by {sig}", file=sys.stderr)
         return code
+
+
+def _closed_pipe() -> int:
+    """The reader went away (``mdo airfoil list | head``): stop quietly, as ``cat`` does.
+    stdout is pointed at /dev/null so that Python's final flush does not complain."""
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+    except (OSError, ValueError):
+        pass
+    return 141   # 128 + SIGPIPE, what a shell reports for a program the pipe closed on
 
 
 if __name__ == "__main__":

@@ -40,6 +40,16 @@ def vehicle(design_wing_area: bool = False) -> PolarVehicle:
         design_wing_area=(10.0, 25.0) if design_wing_area else None)
 
 
+# allowed values of the -o options (mdo.nlp.options; `mdo run problems/polar_ga_mission.py --options`)
+OPTIONS = {
+    "nodes": (int, 3, 30),
+    "cruise_distance_nmi": (float, 1.0, 300.0),
+    "reserve_cruise_distance_nmi": (float, 1.0, 100.0),
+    "design_wing_area": (bool,),
+    "state_form": (str, "differentiation", "integration"),
+}
+
+
 def build(nodes: int = 6, cruise_distance_nmi: float = 50.0, reserve_cruise_distance_nmi: float = 5.0,
           design_wing_area: bool = False, state_form: str = "differentiation", analysis: bool = False):
     p = Problem("polar_ga_mission", "GA profile of Table 5 with an X-57-like fixed-polar airplane")

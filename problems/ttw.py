@@ -32,6 +32,30 @@ from mdo.vehicle.aircraft import Aircraft
 from mdo.vehicle.catalog import ttw
 
 
+# allowed values of the -o options (mdo.nlp.options; `mdo run problems/ttw.py --options`)
+OPTIONS = {
+    "nodes": (int, 3, 30),
+    "cruise_distance_nmi": (float, 1.0, 300.0),
+    "reserve_cruise_distance_nmi": (float, 1.0, 100.0),
+    "cruise_altitude_ft": (float, 0.0, 25000.0),
+    "cruise_speed_mph": (float, 60.0, 300.0),
+    "cells_series": (int, 10, 400),
+    "cells_parallel": (int, 1, 400),
+    "n_stations": (int, 6, 40),
+    "n_azimuth": (int, 1, 12),
+    "wing_strips": (int, 8, 60),
+    "mass_model": (str, "buildup", "fixed"),
+    "rotation": (str, "inboard_up", "outboard_up"),
+    "coupling": (str, "swirl", "local", "freestream"),
+    "swirl_recovery": (str, "bounded", "unbounded"),
+    "limits": (bool,),
+    "tip_mach_limit": (str, "nodes", "design_point", "off"),
+    "allow_regeneration": (bool,),
+    "wake_samples": (int, 1, 15),
+    "tol": (float, 1e-10, 1e-2),
+}
+
+
 def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 50.0,
           reserve_cruise_distance_nmi: float = 5.0, cruise_altitude_ft: float = 2500.0,
           cruise_speed_mph: float = 175.0, cells_series: int = 150, cells_parallel: int = 120,

@@ -74,6 +74,19 @@ def x57_mod4(cells_parallel: int = 40, cruise_speed_mps: float = 172 * MPH,
         mass_inputs={"airframe_calibration": 1.0, "main_gear_length_in": 24.0, "nose_gear_length_in": 20.0,
                      "uninstalled_avionics_lb": 40.0})
 
+# allowed values of the -o options (mdo.nlp.options; `mdo run problems/x57_mod4.py --options`)
+OPTIONS = {
+    "nodes": (int, 3, 30),
+    "cruise_distance_nmi": (float, 1.0, 300.0),
+    "reserve_cruise_distance_nmi": (float, 1.0, 100.0),
+    "cruise_altitude_ft": (float, 0.0, 25000.0),
+    "cruise_speed_mph": (float, 60.0, 300.0),
+    "cells_parallel": (int, 1, 400),
+    "coupling": (str, "swirl", "local", "freestream"),
+    "wing_strips": (int, 8, 60),
+    "n_stations": (int, 6, 40),
+}
+
 
 def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 50.0,
           reserve_cruise_distance_nmi: float = 5.0, cruise_altitude_ft: float = 8000.0,

@@ -78,4 +78,4 @@ def test_fit_table_and_motor_size(capsys):
     assert "Kv" in r.stdout and "peak efficiency  0.94" in r.stdout
     r = _mdo("motor", "size", "--power-kw", 100, "--rpm", 1412, "--voltage", 486, "--efficiency", 1.5,
              capsys=capsys)
-    assert r.returncode == 2 and "rated_efficiency" in r.stderr
+    assert r.returncode == 2 and "--efficiency: a number in [0.5, 0.99]" in r.stderr

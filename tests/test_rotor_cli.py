@@ -26,8 +26,12 @@ def test_sweep_writes_the_columns(capsys, tmp_path):
     assert code == 0, err
     lines = out.strip().splitlines()
     assert lines[0] == "J,CT,CP,eta,T_N,P_W,Q_Nm"
-    data = np.array([[float(v) for v in line.split(",")] for line in lines[1:]])
+    data = np.array([[float(v) if v else np.nan for v in line.split(",")] for line in lines[1:]])
     np.testing.assert_allclose(data[:, 0], [0, 0.2, 0.4, 0.6, 0.8])
+    # efficiency blank exactly where thrust or power <= 0 (issue 23), a number in [0, 1) elsewhere
+    undefined = (data[:, 4] <= 0) | (data[:, 5] <= 0)
+    assert np.array_equal(np.isnan(data[:, 3]), undefined)
+    assert np.all((data[~undefined, 3] >= 0) & (data[~undefined, 3] < 1))
     n = 5000 / 60
     rho = 1.225
     # CT, CP consistent with T, P in SI
@@ -61,8 +65,8 @@ def test_design_then_sweep_round_trip(capsys, tmp_path):
 @pytest.mark.parametrize("extra,field", [
     (["--diameter", "0"], "--diameter"),
     (["--diameter", "-0.3"], "--diameter"),
-    (["--hub-fraction", "1.0"], "hub_fraction"),
-    (["--hub-fraction", "0"], "hub_fraction"),
+    (["--hub-fraction", "1.0"], "--hub-fraction: a number in (0, 1)"),
+    (["--hub-fraction", "0"], "--hub-fraction: a number in (0, 1)"),
     (["--airfoil", "no_such_airfoil"], "airfoil"),
     (["--rpm", "60000"], "tip Mach"),
     (["--rpm", "-5"], "--rpm"),

@@ -4,6 +4,11 @@
     mdo airfoil polar NACA4412 --re 1e6 [--mach 0.3] [--alpha -10 20 1]
     mdo airfoil plot NACA4412 [--out results/airfoils]      (or: --all)
     mdo airfoil check NACA4412                              (errors at the polar points)
+
+``resolve_airfoil`` is the one name resolver of every command that takes an airfoil
+(``mdo wing --airfoil``, ``mdo rotor sweep/design --airfoil``, ``mdo airfoil ...``):
+the shipped airfoils of :func:`mdo.airfoil.available`, case, spaces, '-' and '_'
+ignored; anything else is refused with the same message listing them.
 """
 from __future__ import annotations
 
@@ -11,7 +16,25 @@ from pathlib import Path
 
 import numpy as np
 
-from ..core.errors import InputError, check_positive, check_range
+from ..core.errors import InputError, parse_float, parse_int
+
+__all__ = ["register", "resolve_airfoil", "RE_RANGE", "ALPHA_RANGE_DEG"]
+
+RE_RANGE = (1e4, 1e8)          # chord Reynolds numbers the polar command accepts (data: 2e4 to 1e7)
+ALPHA_RANGE_DEG = (-180.0, 180.0)
+MAX_POLAR_POINTS = 10000
+
+
+def resolve_airfoil(name, field: str = "--airfoil") -> str:
+    """The catalogue key of a shipped airfoil (``'NACA 4412'`` -> ``'naca4412'``), or
+    ``InputError(field, "unknown airfoil ...; available: ...")``, the same for every command."""
+    from .airfoil import available
+    from .catalog import normalize
+
+    key = normalize(name)
+    if key not in available():
+        raise InputError(field, f"unknown airfoil {str(name)!r}; available: {', '.join(available())}")
+    return key
 
 
 def register(subparsers) -> None:
@@ -22,22 +45,27 @@ def register(subparsers) -> None:
     q = sub.add_parser("list", help="shipped airfoils with thickness, data Re range, alpha_0, slope")
     q.set_defaults(func=_cmd_list)
 
+    names = "a shipped airfoil (see 'mdo airfoil list'; case, spaces and '-' ignored)"
     q = sub.add_parser("polar", help="print cl, cd, cm, L/D over an alpha range")
-    q.add_argument("name")
-    q.add_argument("--re", type=float, required=True, help="chord Reynolds number")
-    q.add_argument("--mach", type=float, default=0.0)
-    q.add_argument("--alpha", type=float, nargs=3, default=[-10.0, 20.0, 1.0],
-                   metavar=("START", "END", "STEP"), help="degrees (default -10 20 1)")
+    q.add_argument("name", metavar="NAME", help=names)
+    q.add_argument("--re", required=True, metavar="RE",
+                   help=f"chord Reynolds number, {RE_RANGE[0]:g} to {RE_RANGE[1]:g}")
+    q.add_argument("--mach", default="0", metavar="M", help="Mach number, 0 to 0.95 (default 0)")
+    q.add_argument("--alpha", nargs=3, default=["-10", "20", "1"], metavar=("START", "END", "STEP"),
+                   help=f"angle of attack range, deg, within -180 to 180, STEP > 0, at most "
+                        f"{MAX_POLAR_POINTS} points (default -10 20 1)")
     q.set_defaults(func=_cmd_polar)
 
     q = sub.add_parser("plot", help="write <name>.png: data over surrogate, incl. post-stall")
-    q.add_argument("name", nargs="?")
+    q.add_argument("name", nargs="?", metavar="NAME", help=names)
     q.add_argument("--all", action="store_true", help="every shipped airfoil")
-    q.add_argument("--out", default="results/airfoils", help="folder (default results/airfoils)")
+    q.add_argument("--out", default="results/airfoils", metavar="DIR",
+                   help="folder (default results/airfoils); existing figures are kept unless --force")
+    q.add_argument("--force", action="store_true", help="replace existing <name>.png files")
     q.set_defaults(func=_cmd_plot)
 
     q = sub.add_parser("check", help="surrogate minus XFOIL data at every polar point")
-    q.add_argument("name")
+    q.add_argument("name", metavar="NAME", help=names)
     q.set_defaults(func=_cmd_check)
 
     p.set_defaults(func=lambda args: (p.print_help(), 2)[1])
@@ -60,15 +88,20 @@ def _cmd_list(args) -> int:
 def _cmd_polar(args) -> int:
     from . import Airfoil
 
-    check_positive("--re", args.re)
-    check_range("--mach", args.mach, 0.0, 0.95)
-    a0, a1, da = args.alpha
-    if da <= 0 or a1 < a0 or (a1 - a0) / da > 10000:
-        raise InputError("--alpha", "expects START <= END and 0 < STEP with at most 10000 points")
-    af = Airfoil.from_name(args.name)
+    from ..core.errors import check_finite_result
+
+    key = resolve_airfoil(args.name, "NAME")
+    re_ = parse_float("--re", args.re, *RE_RANGE)
+    mach = parse_float("--mach", args.mach, 0.0, 0.95)
+    a0, a1 = (parse_float("--alpha", a, *ALPHA_RANGE_DEG, "deg") for a in args.alpha[:2])
+    da = parse_float("--alpha", args.alpha[2], 0.0, 360.0, "deg (STEP)", lower_open=True)
+    if a1 < a0 or (a1 - a0) / da > MAX_POLAR_POINTS:
+        raise InputError("--alpha", f"expects START <= END and 0 < STEP with at most {MAX_POLAR_POINTS} points")
+    af = Airfoil.from_name(key)
     alpha = np.arange(a0, a1 + 0.5 * da, da)
-    cl, cd, cm = af.coefficients(np.radians(alpha), args.re, args.mach)
-    print(f"{af.title}: Re = {args.re:.4g}, M = {args.mach:g}")
+    cl, cd, cm = af.coefficients(np.radians(alpha), re_, mach)
+    check_finite_result("--re", cl=cl, cd=cd, cm=cm)
+    print(f"{af.title}: Re = {re_:.4g}, M = {mach:g}")
     print(f"{'alpha':>8s} {'cl':>8s} {'cd':>9s} {'cm':>8s} {'L/D':>8s}")
     for row in zip(alpha, cl, cd, cm, cl / cd):
         print("{:8.2f} {:8.4f} {:9.5f} {:8.4f} {:8.2f}".format(*row))
@@ -81,9 +114,18 @@ def _cmd_plot(args) -> int:
 
     if not args.all and not args.name:
         raise InputError("name", "give an airfoil name or --all")
-    names = available() if args.all else [args.name]
+    from ..core.output import check_new_files
+
+    names = available() if args.all else [resolve_airfoil(args.name, "NAME")]
     out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
+    if out.exists() and not out.is_dir():
+        raise InputError("--out", f"{out} exists and is not a folder")
+    if out.is_dir():   # every figure checked before the first is drawn
+        check_new_files([out / f"{n}.png" for n in names], args.force)
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise InputError("--out", f"cannot create folder {out}: {exc.strerror or exc}") from None
     for name in names:
         af = Airfoil.from_name(name)
         path = plot_airfoil(af, out / f"{af.key}.png")
@@ -95,7 +137,7 @@ def _cmd_check(args) -> int:
     from . import Airfoil
     from .validation import CD_TOL, CL_TOL, polar_errors
 
-    af = Airfoil.from_name(args.name)
+    af = Airfoil.from_name(resolve_airfoil(args.name, "NAME"))
     errs = polar_errors(af)
     print(f"{af.title}: surrogate - XFOIL at the polar points (M = 0)")
     print(f"{'Re':>9s} {'n':>4s} {'max|dcl|':>8s} {'rms dcl':>8s} {'max dcd/cd':>10s} {'rms':>6s} "

@@ -34,6 +34,7 @@ import time
 import traceback
 from pathlib import Path
 
+from .options import check_options
 from .problem import INTERRUPT_STATUS, Problem, Solution, WarmStartError, write_atomic
 
 __all__ = ["RunError", "ResultWriteError", "RunFolder", "load_problem_file", "default_out_dir",
@@ -93,10 +94,7 @@ def load_problem_file(path, *, analysis: bool = False, options: dict | None = No
     takes_kwargs = any(p.kind == p.VAR_KEYWORD for p in params.values())
     if "analysis" in params or takes_kwargs:
         options["analysis"] = analysis
-    unknown = [k for k in options if k not in params and not takes_kwargs]
-    if unknown:
-        raise RunError(f"problem file {path}: build() has no option {unknown[0]!r}; "
-                       f"its options are {', '.join(params) or 'none'}")
+    options = check_options(module, build, options, path)  # keys, types, ranges (mdo.nlp.options)
     try:
         problem = build(**options)
     except RunError:

@@ -5,10 +5,16 @@
   discharge of a pack (one cell by default) from full to the cut-off voltage per
   cell; writes ``capacity_Ah,voltage_V`` (pack values) to FILE or stdout.
 * ``mdo battery fit``: the cell model's voltage error table against the measured
-  curves; ``mdo battery report [--out DIR]``: figures and tables (results/powertrain).
+  curves; ``mdo battery report [--out DIR] [--force]``: figures and tables, into
+  ``./battery_report/`` by default (never into the repository's committed
+  ``results/powertrain`` unless asked with ``--out``; existing files are kept unless
+  ``--force``).
 * ``mdo motor size --power-kw P --rpm N --voltage V [--efficiency E]
   [--copper-loss-fraction F]``: Kv, resistance, no-load current, mass, peak
   efficiency and torque-speed line of a DC motor sized from its rating.
+
+Every number has a finite range (``-h``; the message names it, exit 2); ``--out``
+never replaces an existing file without ``--force``.
 """
 from __future__ import annotations
 
@@ -18,15 +24,17 @@ import sys
 import numpy as np
 
 from ..core import units as u
-from ..core.errors import InputError, check_range
+from ..core.errors import InputError, parse_float, parse_int
+from ..core.output import check_new_file, check_new_files, write_new_file
 
 MAX_CELL_CURRENT_A = 12.0   # 1.5 x the largest measured current (8 A)
+MAX_CELLS = 10000            # per string / in parallel: far beyond any aircraft pack
+MAX_POINTS = 100000
+REPORT_FILES = ("discharge_fit.png", "discharge_residuals.png", "fit_errors.md", "motors.png", "balance.md")
 
 
 def _positive_int(field, value):
-    if value is None or value < 1:
-        raise InputError(field, f"must be a whole number >= 1, got {value}")
-    return int(value)
+    return parse_int(field, value, 1, MAX_CELLS)
 
 
 def discharge_curve(current_A, cells_series=1, cells_parallel=1, temperature_C=25.0, cutoff_V=2.5,
@@ -36,17 +44,16 @@ def discharge_curve(current_A, cells_series=1, cells_parallel=1, temperature_C=2
 
     cells_series = _positive_int("--cells-series", cells_series)
     cells_parallel = _positive_int("--cells-parallel", cells_parallel)
-    if not np.isfinite(current_A) or current_A <= 0:
-        raise InputError("--current", f"must be > 0 A (pack discharge current), got {current_A:g}")
+    current_A = parse_float("--current", current_A, 0.0, MAX_CELL_CURRENT_A * cells_parallel, "A (pack current)",
+                            lower_open=True)
     i_cell = current_A / cells_parallel
     if i_cell > MAX_CELL_CURRENT_A:
         raise InputError("--current", f"cell current {i_cell:g} A exceeds {MAX_CELL_CURRENT_A:g} A "
                          f"(1.5x the largest measured); allowed pack current (0, "
                          f"{MAX_CELL_CURRENT_A * cells_parallel:g}] A")
-    check_range("--cutoff", cutoff_V, 2.0, 4.0, "V")
-    check_range("--temperature", temperature_C, 0.0, 50.0, "deg C")
-    if points is None or points < 2:
-        raise InputError("--points", f"must be >= 2, got {points}")
+    cutoff_V = parse_float("--cutoff", cutoff_V, 2.0, 4.0, "V")
+    temperature_C = parse_float("--temperature", temperature_C, 0.0, 50.0, "deg C")
+    points = parse_int("--points", points, 2, MAX_POINTS)
     pack = Pack(cells_series, cells_parallel, temperature_C=temperature_C, min_cell_voltage_V=cutoff_V)
     cell, T = pack.cell, temperature_C
     if cell.voltage(1.0, i_cell, T) <= cutoff_V:
@@ -66,6 +73,8 @@ def discharge_curve(current_A, cells_series=1, cells_parallel=1, temperature_C=2
 
 
 def _cmd_discharge(args) -> int:
+    if args.out:
+        check_new_file(args.out, args.force)
     q, v = discharge_curve(args.current, args.cells_series, args.cells_parallel, args.temperature,
                            args.cutoff, args.points)
     buf = io.StringIO()
@@ -73,8 +82,7 @@ def _cmd_discharge(args) -> int:
     for a, b in zip(q, v):
         buf.write(f"{a:.10g},{b:.10g}\n")
     if args.out:
-        with open(args.out, "w") as f:
-            f.write(buf.getvalue())
+        write_new_file(args.out, buf.getvalue(), args.force)
         print(f"mdo battery: {len(q)} points, {q[-1]:.4g} Ah to {v[-1]:.4g} V -> {args.out}", file=sys.stderr)
     else:
         sys.stdout.write(buf.getvalue())
@@ -95,20 +103,32 @@ def _cmd_fit(args) -> int:
 
 
 def _cmd_report(args) -> int:
+    from pathlib import Path
+
     from .report import write_report
-    for f in write_report(args.out):
+    out = Path(args.out)
+    if out.exists() and not out.is_dir():
+        raise InputError("--out", f"{out} exists and is not a folder")
+    if out.is_symlink():
+        raise InputError("--out", f"{out} is a symbolic link; refusing to write through it")
+    if out.is_dir():   # every file checked before the first is written
+        check_new_files([out / f for f in REPORT_FILES], args.force)
+    try:
+        files = write_report(out)
+    except OSError as exc:
+        raise InputError("--out", f"cannot write into {out}: {exc.strerror or exc}") from None
+    for f in files:
         print(f"mdo battery: wrote {f}")
     return 0
 
 
 def _cmd_motor_size(args) -> int:
     from .motor import size_dc_motor
-    if args.power_kw is None or args.power_kw <= 0:
-        raise InputError("--power-kw", f"must be > 0 kW, got {args.power_kw}")
-    if args.rpm is None or args.rpm <= 0:
-        raise InputError("--rpm", f"must be > 0 rpm, got {args.rpm}")
-    if args.voltage is None or args.voltage <= 0:
-        raise InputError("--voltage", f"must be > 0 V, got {args.voltage}")
+    args.power_kw = parse_float("--power-kw", args.power_kw, 0.0, 1e4, "kW", lower_open=True)
+    args.rpm = parse_float("--rpm", args.rpm, 0.0, 1e5, "rpm", lower_open=True)
+    args.voltage = parse_float("--voltage", args.voltage, 0.0, 1e4, "V", lower_open=True)
+    args.efficiency = parse_float("--efficiency", args.efficiency, 0.5, 0.99)
+    args.copper_loss_fraction = parse_float("--copper-loss-fraction", args.copper_loss_fraction, 0.05, 0.95)
     m = size_dc_motor(args.power_kw * 1e3, args.rpm * u.RPM, args.voltage, args.efficiency,
                       args.copper_loss_fraction)
     eta, i_pk = m.peak_efficiency(args.voltage)
@@ -131,30 +151,39 @@ def register(subparsers) -> None:
     bsub = bat.add_subparsers(dest="battery_command", metavar="ACTION")
     d = bsub.add_parser("discharge", help="constant-current discharge curve (capacity_Ah,voltage_V)",
                         description="Constant-current discharge of a pack from full to the cut-off voltage.")
-    d.add_argument("--current", type=float, required=True, help="pack discharge current, A")
-    d.add_argument("--cells-series", type=int, default=1, help="cells in series (default 1)")
-    d.add_argument("--cells-parallel", type=int, default=1, help="cells in parallel (default 1)")
-    d.add_argument("--temperature", type=float, default=25.0, help="ambient/pack temperature, deg C (0-50)")
-    d.add_argument("--cutoff", type=float, default=2.5, help="cut-off voltage per cell, V (default 2.5)")
-    d.add_argument("--points", type=int, default=101, help="number of output points (default 101)")
-    d.add_argument("--out", help="CSV file (default: stdout)")
+    d.add_argument("--current", required=True, metavar="A",
+                   help="pack discharge current, A: > 0, at most {MAX_CELL_CURRENT_A:g} A per parallel cell")
+    d.add_argument("--cells-series", default="1", metavar="N",
+                   help=f"cells in series, an integer in [1, {MAX_CELLS}] (default 1)")
+    d.add_argument("--cells-parallel", default="1", metavar="N",
+                   help=f"cells in parallel, an integer in [1, {MAX_CELLS}] (default 1)")
+    d.add_argument("--temperature", default="25", metavar="C",
+                   help="ambient/pack temperature, [0, 50] deg C (default 25)")
+    d.add_argument("--cutoff", default="2.5", metavar="V", help="cut-off voltage per cell, [2, 4] V (default 2.5)")
+    d.add_argument("--points", default="101", metavar="N",
+                   help=f"number of output points, an integer in [2, {MAX_POINTS}] (default 101)")
+    d.add_argument("--out", metavar="FILE.csv", help="CSV file (default: stdout); never replaced without --force")
+    d.add_argument("--force", action="store_true", help="replace an existing --out file")
     d.set_defaults(func=_cmd_discharge)
     f = bsub.add_parser("fit", help="voltage errors of the cell model against the measured curves")
     f.set_defaults(func=_cmd_fit)
     rp = bsub.add_parser("report", help="figures and tables: model vs measured, motors, network balance",
-                         description="Write discharge_fit.png, discharge_residuals.png, fit_errors.md, "
-                                     "motors.png, balance.md into a folder.")
-    rp.add_argument("--out", default="results/powertrain", help="folder (default results/powertrain)")
+                         description="Write " + ", ".join(REPORT_FILES) + " into a folder.")
+    rp.add_argument("--out", default="battery_report", metavar="DIR",
+                    help="folder (default ./battery_report); the committed results/powertrain is written only "
+                         "when named here, and existing files only with --force")
+    rp.add_argument("--force", action="store_true", help="replace existing report files in --out")
     rp.set_defaults(func=_cmd_report)
 
     mot = subparsers.add_parser("motor", help="DC motor sizing", description="DC motor models of mdo.powertrain.")
     msub = mot.add_subparsers(dest="motor_command", metavar="ACTION")
     s = msub.add_parser("size", help="size a DC motor from its rating",
                         description="Kv, resistance, no-load current and mass from a rating (mdo.powertrain.motor).")
-    s.add_argument("--power-kw", type=float, required=True, help="rated shaft power, kW")
-    s.add_argument("--rpm", type=float, required=True, help="rated speed, rpm")
-    s.add_argument("--voltage", type=float, required=True, help="terminal voltage at the rated point, V")
-    s.add_argument("--efficiency", type=float, default=0.94, help="efficiency at the rated point (default 0.94)")
-    s.add_argument("--copper-loss-fraction", type=float, default=0.6,
-                   help="share of the rated-point losses in the winding (default 0.6)")
+    s.add_argument("--power-kw", required=True, metavar="P", help="rated shaft power, (0, 1e4] kW")
+    s.add_argument("--rpm", required=True, metavar="RPM", help="rated speed, (0, 1e5] rpm")
+    s.add_argument("--voltage", required=True, metavar="V", help="terminal voltage at the rated point, (0, 1e4] V")
+    s.add_argument("--efficiency", default="0.94", metavar="E",
+                   help="efficiency at the rated point, [0.5, 0.99] (default 0.94)")
+    s.add_argument("--copper-loss-fraction", default="0.6", metavar="F",
+                   help="share of the rated-point losses in the winding, [0.05, 0.95] (default 0.6)")
     s.set_defaults(func=_cmd_motor_size)

@@ -8,9 +8,11 @@
 The rotor sits at the origin with its wake along +x; the line runs along y at
 (x, z).  Blade circulation: ``--gamma`` per blade element (equal-width elements
 from the hub to the tip) or ``--thrust-gamma`` for a uniform value.  Writes
-``y_m,u_mps,v_mps,w_mps`` (stdout without ``--out``).  ``--model mean`` is the
-blade-passage-averaged wake of the NLP; ``full`` the helical fixed wake.
-Bad input raises ``InputError`` (one line, exit 2).
+``y_m,u_mps,v_mps,w_mps`` (stdout without ``--out``; an existing file is replaced
+only with ``--force``).  ``--model mean`` is the blade-passage-averaged wake of the
+NLP; ``full`` the helical fixed wake, whose size (points x filament segments) is
+bounded.  Every number has a finite range (``-h``); bad input raises ``InputError``
+(one line, exit 2).
 """
 from __future__ import annotations
 
@@ -19,77 +21,78 @@ import sys
 
 import numpy as np
 
-from ..core.errors import InputError
+from ..core.errors import InputError, check_finite_result, parse_choice, parse_float, parse_grid, parse_int
+from ..core.output import check_new_file, write_new_file
 
 __all__ = ["register"]
 
 
-def _range(text, field):
-    parts = str(text).split(":")
-    try:
-        a, b, s = (float(p) for p in parts)
-    except ValueError as exc:
-        raise InputError(field, f"expected START:STOP:STEP, got {text!r}") from exc
-    if s <= 0 or b < a or not all(math.isfinite(v) for v in (a, b, s)):
-        raise InputError(field, f"need finite START <= STOP and STEP > 0, got {text!r}")
-    n = int(math.floor((b - a) / s + 1e-9)) + 1
-    if n > 20000:
-        raise InputError(field, f"{n} points is too many (max 20000)")
-    return a + s * np.arange(n)
+Y_RANGE_M = (-1000.0, 1000.0)
+MAX_POINTS = 20000
+MAX_ELEMENTS = 50
+# the full wake's cost is points x filament segments (each Biot-Savart pair a few
+# dozen flops, held in memory at build); 2e7 is some 20 s and a few hundred MB
+MAX_FULL_WAKE_PAIRS = 2e7
 
 
-def _positive(field, v, unit=""):
-    if v is None or not math.isfinite(v) or v <= 0:
-        raise InputError(field, f"must be a finite number > 0{(' ' + unit) if unit else ''}, got {v!r}")
+def _gamma(args):
+    if (args.gamma is None) == (args.thrust_gamma is None):
+        raise InputError("--gamma", "give exactly one of --gamma G1,G2,... or --thrust-gamma G")
+    if args.thrust_gamma is not None:
+        return np.array([parse_float("--thrust-gamma", args.thrust_gamma, -1e4, 1e4, "m^2/s")])
+    parts = args.gamma.split(",")
+    if not 1 <= len(parts) <= MAX_ELEMENTS:
+        raise InputError("--gamma", f"1 to {MAX_ELEMENTS} comma-separated values, got {len(parts)}")
+    return np.array([parse_float("--gamma", v, -1e4, 1e4, "m^2/s") for v in parts])
+
+
+def _full_wake_options(args, n_points, n_elements) -> dict:
+    phases = parse_int("--phases", args.phases, 1, 36)
+    rotations = parse_float("--rotations", args.rotations, 0.0, 100.0, lower_open=True)
+    from .helical import DEFAULT_STEPS_PER_ROTATION
+    segments = phases * args.blades * (n_elements + 1) * math.ceil(rotations * DEFAULT_STEPS_PER_ROTATION)
+    if segments * n_points > MAX_FULL_WAKE_PAIRS:
+        raise InputError("--rotations", f"the full wake would need {n_points} points x {segments} filament segments "
+                                        f"= {segments * n_points:.3g} > {MAX_FULL_WAKE_PAIRS:.0e}; lower --rotations, "
+                                        f"--phases, the number of --gamma elements or of --y points")
+    return dict(phases=phases, n_rotations=rotations)
 
 
 def _cmd_velocity(args) -> int:
     from . import WakeRotor, external_velocity
 
-    _positive("--radius", args.radius, "m")
-    _positive("--rpm", args.rpm, "rpm")
-    _positive("--v-wake", args.v_wake, "m/s")
-    if args.blades < 1:
-        raise InputError("--blades", f"must be >= 1, got {args.blades}")
-    if not (0.0 < args.hub_fraction < 0.9):
-        raise InputError("--hub-fraction", f"allowed range (0, 0.9), got {args.hub_fraction:g}")
-    if args.spin not in (1, -1):
-        raise InputError("--spin", f"must be +1 or -1, got {args.spin}")
-    if (args.gamma is None) == (args.thrust_gamma is None):
-        raise InputError("--gamma", "give exactly one of --gamma G1,G2,... or --thrust-gamma G")
-    if args.gamma is not None:
-        try:
-            g = np.array([float(v) for v in args.gamma.split(",")])
-        except ValueError as exc:
-            raise InputError("--gamma", f"expected comma-separated numbers, got {args.gamma!r}") from exc
-        if g.size < 1 or not np.all(np.isfinite(g)):
-            raise InputError("--gamma", "needs at least one finite value")
+    radius = parse_float("--radius", args.radius, 0.0, 100.0, "m", lower_open=True)
+    args.blades = parse_int("--blades", args.blades, 1, 20)
+    rpm = parse_float("--rpm", args.rpm, 0.0, 1e5, "rpm", lower_open=True)
+    v_wake = parse_float("--v-wake", args.v_wake, 0.0, 1000.0, "m/s", lower_open=True)
+    hub = parse_float("--hub-fraction", args.hub_fraction, 0.0, 0.9, lower_open=True, upper_open=True)
+    spin = int(parse_choice("--spin", str(args.spin).lstrip("+"), ("1", "-1")))
+    x = parse_float("--x", args.x, -1000.0, 1000.0, "m")
+    z = parse_float("--z", args.z, -1000.0, 1000.0, "m")
+    g = _gamma(args)
+    model = parse_choice("--model", args.model, ("mean", "full"))
+    if model == "mean":
+        core = float(parse_choice("--core-rel", f"{parse_float('--core-rel', args.core_rel, 0, 1):g}",
+                                  ("0.05", "0.1")))
     else:
-        if not math.isfinite(args.thrust_gamma):
-            raise InputError("--thrust-gamma", "must be finite")
-        g = np.array([args.thrust_gamma])
-    if args.model not in ("mean", "full"):
-        raise InputError("--model", f"'mean' or 'full', got {args.model!r}")
-    if args.core_rel not in (0.05, 0.1) and args.model == "mean":
-        raise InputError("--core-rel", "the mean-wake tables exist for 0.05 and 0.1")
-    y = _range(args.y, "--y")
-    rot = WakeRotor(center=(0.0, 0.0, 0.0), axis=(1.0, 0.0, 0.0), radius_m=args.radius,
-                    s_edges=np.linspace(args.hub_fraction, 1.0, g.size + 1), blades=args.blades,
-                    spin=args.spin, core_rel=args.core_rel)
-    pts = np.vstack([np.full_like(y, args.x), y, np.full_like(y, args.z)])
-    om = args.rpm * math.pi / 30.0
-    kw = dict(model=args.model)
-    if args.model == "full":
-        if args.phases < 1 or args.rotations <= 0:
-            raise InputError("--phases", "phases >= 1 and rotations > 0 required")
-        kw.update(phases=args.phases, n_rotations=args.rotations)
-    u, v, w = external_velocity(pts, [rot], [g], [om], [args.v_wake], **kw)
+        core = parse_float("--core-rel", args.core_rel, 0.0, 1.0, lower_open=True)
+    y = parse_grid("--y", args.y, *Y_RANGE_M, MAX_POINTS, "m")
+    kw = dict(model=model)
+    if model == "full":
+        kw.update(_full_wake_options(args, y.size, g.size))
+    if args.out:
+        check_new_file(args.out, args.force)
+    rot = WakeRotor(center=(0.0, 0.0, 0.0), axis=(1.0, 0.0, 0.0), radius_m=radius,
+                    s_edges=np.linspace(hub, 1.0, g.size + 1), blades=args.blades, spin=spin, core_rel=core)
+    pts = np.vstack([np.full_like(y, x), y, np.full_like(y, z)])
+    om = rpm * math.pi / 30.0
+    u, v, w = external_velocity(pts, [rot], [g], [om], [v_wake], **kw)
+    check_finite_result("--radius", u=u, v=v, w=w)
     lines = ["y_m,u_mps,v_mps,w_mps"] + [f"{yi:.6g},{a:.6g},{b:.6g},{c:.6g}"
                                          for yi, a, b, c in zip(y, u[:, 0], v[:, 0], w[:, 0])]
     text = "\n".join(lines) + "\n"
     if args.out:
-        with open(args.out, "w") as f:
-            f.write(text)
+        write_new_file(args.out, text, args.force)
     else:
         sys.stdout.write(text)
     return 0
@@ -97,24 +100,37 @@ def _cmd_velocity(args) -> int:
 
 def register(subparsers) -> None:
     p = subparsers.add_parser("wake", help="propeller wake: induced velocity of a rotor's slipstream",
-                              description=__doc__.split("\n\n")[0])
+                              description="The slipstream of one rotor along a line, from the command line.")
     sub = p.add_subparsers(dest="wake_command", metavar="WAKE_COMMAND")
-    v = sub.add_parser("velocity", help="induced velocity along a spanwise line behind a rotor")
-    v.add_argument("--radius", type=float, required=True, help="tip radius, m")
-    v.add_argument("--blades", type=int, required=True)
-    v.add_argument("--gamma", help="blade circulation per element, m^2/s, hub to tip (comma-separated)")
-    v.add_argument("--thrust-gamma", type=float, help="uniform blade circulation, m^2/s")
-    v.add_argument("--rpm", type=float, required=True)
-    v.add_argument("--v-wake", type=float, required=True, help="wake convection speed along the axis, m/s")
-    v.add_argument("--hub-fraction", type=float, default=0.15)
-    v.add_argument("--spin", type=int, default=1, help="+1/-1: sense of rotation about the wake axis (+x)")
-    v.add_argument("--x", type=float, default=1.0, help="axial station of the line, m")
-    v.add_argument("--z", type=float, default=0.0, help="height of the line, m")
-    v.add_argument("--y", default="-2:2:0.1", help="START:STOP:STEP along y, m")
-    v.add_argument("--model", default="mean")
-    v.add_argument("--phases", type=int, default=1)
-    v.add_argument("--rotations", type=float, default=5.0)
-    v.add_argument("--core-rel", type=float, default=0.05)
-    v.add_argument("--out")
+    v = sub.add_parser("velocity", help="induced velocity along a spanwise line behind a rotor",
+                       description="Induced velocity (u, v, w) of one rotor's wake along a line parallel to y. "
+                                   "The rotor sits at the origin with its wake along +x.")
+    v.add_argument("--radius", required=True, metavar="R_M", help="tip radius, (0, 100] m")
+    v.add_argument("--blades", required=True, metavar="B", help="number of blades, an integer in [1, 20]")
+    v.add_argument("--gamma", metavar="G1,G2,...",
+                   help=f"blade circulation per element (equal-width elements, hub to tip), each in "
+                        f"[-1e4, 1e4] m^2/s, 1 to {MAX_ELEMENTS} values")
+    v.add_argument("--thrust-gamma", metavar="G", help="uniform blade circulation, [-1e4, 1e4] m^2/s")
+    v.add_argument("--rpm", required=True, metavar="RPM", help="rotor speed, (0, 1e+05] rpm")
+    v.add_argument("--v-wake", required=True, metavar="V_MPS",
+                   help="wake convection speed along the axis, (0, 1000] m/s")
+    v.add_argument("--hub-fraction", default="0.15", metavar="F", help="hub radius / tip radius, (0, 0.9) (default 0.15)")
+    v.add_argument("--spin", default="1", metavar="+1|-1",
+                   help="sense of rotation about the wake axis (+x): +1 or -1 (default +1)")
+    v.add_argument("--x", default="1", metavar="X_M", help="axial station of the line, [-1000, 1000] m (default 1)")
+    v.add_argument("--z", default="0", metavar="Z_M", help="height of the line, [-1000, 1000] m (default 0)")
+    v.add_argument("--y", default="-2:2:0.1", metavar="START:STOP:STEP",
+                   help=f"stations along y, within [-1000, 1000] m, at most {MAX_POINTS} points (default -2:2:0.1)")
+    v.add_argument("--model", default="mean", metavar="mean|full",
+                   help="mean: the blade-passage-averaged wake of the NLP (default); full: the helical fixed wake")
+    v.add_argument("--phases", default="1", metavar="N",
+                   help="full model: blade positions averaged, an integer in [1, 36] (default 1)")
+    v.add_argument("--rotations", default="5", metavar="N",
+                   help="full model: wake length in rotor revolutions, (0, 100] (default 5)")
+    v.add_argument("--core-rel", default="0.05", metavar="C",
+                   help="vortex core radius / tip radius: 0.05 or 0.1 for the mean model (its tables), "
+                        "(0, 1] for the full one (default 0.05)")
+    v.add_argument("--out", metavar="FILE.csv", help="output file (default stdout); never replaced without --force")
+    v.add_argument("--force", action="store_true", help="replace an existing --out file")
     v.set_defaults(func=_cmd_velocity)
     p.set_defaults(func=lambda args: (p.print_help(), 2)[1])

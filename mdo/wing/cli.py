@@ -8,7 +8,8 @@ Prints CL, CDi (Trefftz plane), the span efficiency and the spanwise section
 lift coefficient of the right half; ``--json`` prints one JSON object with keys
 ``CL``, ``CDi``, ``e``, ``y`` (m, strip centres of the right half) and ``cl``.
 Sweep is that of the quarter-chord line; the Prandtl-Glauert stretch is built at
-the given Mach number.
+the given Mach number.  Every number has a finite range (``mdo wing -h``); the
+section names are those of ``mdo airfoil list`` (one resolver for every command).
 """
 from __future__ import annotations
 
@@ -17,55 +18,62 @@ import math
 
 import numpy as np
 
-from ..core.errors import InputError, check_positive, check_range
+from ..core.errors import check_finite_result, parse_float, parse_int
 
 __all__ = ["register", "run_wing"]
 
 
+# (field, attribute, lower, upper, unit, lower open, upper open, help): every number is
+# checked against a finite range (issue 19 item 4); the help text prints the same range
+_NUMBERS = (
+    ("--span", "span", 0.01, 1000.0, "m", False, False, "tip-to-tip span"),
+    ("--root-chord", "root_chord", 0.001, 100.0, "m", False, False, "root chord"),
+    ("--taper", "taper", 0.0, 2.0, "", True, False, "tip/root chord ratio"),
+    ("--sweep", "sweep", -80.0, 80.0, "deg", True, True, "quarter-chord sweep"),
+    ("--dihedral", "dihedral", -80.0, 80.0, "deg", True, True, "dihedral"),
+    ("--twist-root", "twist_root", -30.0, 30.0, "deg", False, False, "root twist, nose up"),
+    ("--twist-tip", "twist_tip", -30.0, 30.0, "deg", False, False, "tip twist, nose up"),
+    ("--alpha", "alpha", -30.0, 30.0, "deg", False, False, "angle of attack"),
+    ("--mach", "mach", 0.0, 0.95, "", False, False, "Mach number (subsonic; Prandtl-Glauert)"),
+)
+_INTEGERS = (("--nspan", "nspan", 1, 200, "panels per semispan"), ("--nchord", "nchord", 1, 30, "chordwise panels"))
+_DEFAULTS = {"sweep": "0", "dihedral": "0", "twist_root": "0", "twist_tip": "0", "mach": "0",
+             "nspan": "20", "nchord": "4"}
+_REQUIRED = ("span", "root_chord", "taper", "alpha")
+
+
 def register(subparsers) -> None:
+    from ..core.errors import range_text
+
     p = subparsers.add_parser(
         "wing", help="vortex-lattice analysis of a trapezoidal wing (CL, CDi, e, spanwise cl)",
         description="Vortex-lattice analysis of a mirrored trapezoidal wing: CL, induced drag "
                     "(Trefftz plane), span efficiency and spanwise cl.")
-    p.add_argument("--span", type=float, required=True, metavar="M", help="tip-to-tip span, m (> 0)")
-    p.add_argument("--root-chord", type=float, required=True, metavar="M", help="root chord, m (> 0)")
-    p.add_argument("--taper", type=float, required=True, metavar="L", help="tip/root chord ratio, (0, 2]")
-    p.add_argument("--sweep", type=float, default=0.0, metavar="DEG", help="quarter-chord sweep, deg (|.| < 80)")
-    p.add_argument("--dihedral", type=float, default=0.0, metavar="DEG", help="dihedral, deg (|.| < 80)")
-    p.add_argument("--twist-root", type=float, default=0.0, metavar="DEG", help="root twist, deg, nose up")
-    p.add_argument("--twist-tip", type=float, default=0.0, metavar="DEG", help="tip twist, deg, nose up")
-    p.add_argument("--alpha", type=float, required=True, metavar="DEG", help="angle of attack, deg (|.| <= 30)")
-    p.add_argument("--mach", type=float, default=0.0, metavar="M", help="Mach number, [0, 0.95] (default 0)")
-    p.add_argument("--nspan", type=int, default=20, metavar="N", help="panels per semispan, 1..200 (default 20)")
-    p.add_argument("--nchord", type=int, default=4, metavar="N", help="chordwise panels, 1..30 (default 4)")
+    for flag, dest, lo, hi, unit, lo_open, hi_open, what in _NUMBERS:
+        default = _DEFAULTS.get(dest)
+        tail = f" (default {default})" if default is not None else ""
+        p.add_argument(flag, dest=dest, required=dest in _REQUIRED, default=default, metavar=unit.upper() or "X",
+                       help=f"{what}, {range_text(lo, hi, unit, lo_open, hi_open)}{tail}")
+    for flag, dest, lo, hi, what in _INTEGERS:
+        p.add_argument(flag, dest=dest, default=_DEFAULTS[dest], metavar="N",
+                       help=f"{what}, an integer in [{lo}, {hi}] (default {_DEFAULTS[dest]})")
     p.add_argument("--airfoil", default=None, metavar="NAME",
-                   help="section camber line (e.g. naca4412, clarky, naca63412, e63; default flat plate)")
+                   help="section whose camber line the lattice follows: a shipped airfoil "
+                        "(see 'mdo airfoil list'); default flat plate")
     p.add_argument("--json", action="store_true", help="print a JSON object (CL, CDi, e, y, cl)")
     p.set_defaults(func=_handler)
 
 
 def _check(args) -> None:
-    check_positive("--span", args.span, "m")
-    check_positive("--root-chord", args.root_chord, "m")
-    if not (math.isfinite(args.taper) and 0.0 < args.taper <= 2.0):
-        raise InputError("--taper", f"allowed range (0, 2], got {args.taper:g}")
-    check_range("--sweep", args.sweep, -80.0, 80.0, "deg", inclusive=False)
-    check_range("--dihedral", args.dihedral, -80.0, 80.0, "deg", inclusive=False)
-    check_range("--twist-root", args.twist_root, -30.0, 30.0, "deg")
-    check_range("--twist-tip", args.twist_tip, -30.0, 30.0, "deg")
-    check_range("--alpha", args.alpha, -30.0, 30.0, "deg")
-    if not math.isfinite(args.mach) or args.mach < 0.0 or args.mach >= 1.0:
-        raise InputError("--mach", f"allowed range [0, 1) (subsonic; Prandtl-Glauert), got {args.mach:g}")
-    check_range("--mach", args.mach, 0.0, 0.95)
-    if not 1 <= args.nspan <= 200:
-        raise InputError("--nspan", f"allowed range [1, 200], got {args.nspan}")
-    if not 1 <= args.nchord <= 30:
-        raise InputError("--nchord", f"allowed range [1, 30], got {args.nchord}")
-    from .camber import camber_line
-    try:
-        camber_line(args.airfoil)
-    except InputError as exc:
-        raise InputError("--airfoil", str(exc).split(": ", 1)[-1]) from None
+    """Parse every number of ``args`` in place (InputError names the flag and its range)."""
+    for flag, dest, lo, hi, unit, lo_open, hi_open, _ in _NUMBERS:
+        setattr(args, dest, parse_float(flag, getattr(args, dest), lo, hi, unit,
+                                        lower_open=lo_open, upper_open=hi_open))
+    for flag, dest, lo, hi, _ in _INTEGERS:
+        setattr(args, dest, parse_int(flag, getattr(args, dest), lo, hi))
+    if args.airfoil is not None:
+        from ..airfoil.cli import resolve_airfoil
+        args.airfoil = resolve_airfoil(args.airfoil, "--airfoil")
 
 
 def run_wing(span, root_chord, taper, alpha_deg, *, sweep_deg=0.0, dihedral_deg=0.0, twist_root_deg=0.0,
@@ -94,6 +102,7 @@ def _handler(args) -> int:
                    dihedral_deg=args.dihedral, twist_root_deg=args.twist_root,
                    twist_tip_deg=args.twist_tip, mach=args.mach, nspan=args.nspan,
                    nchord=args.nchord, airfoil=args.airfoil)
+    check_finite_result("--span", CL=out["CL"], CDi=out["CDi"], e=out["e"], cl=out["cl"])
     if args.json:
         print(json.dumps(out))
         return 0

@@ -61,6 +61,10 @@ def write_outputs(out_dir: Path = OUT_DIR) -> dict:
     return apc_common.write_outputs(PROP, out_dir)
 
 
+# allowed values of the -o options (mdo.nlp.options)
+OPTIONS = {"n_stations": (int, 6, 60)}
+
+
 def build(airfoil: str = AIRFOIL, n_stations: int = N_STATIONS, **_):
     """The validation as one NLP: inflow angles of all stations x data points as
     variables, BEMT residuals as constraints, no objective (a feasibility solve)."""
