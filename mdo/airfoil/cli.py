@@ -27,10 +27,17 @@ MAX_POLAR_POINTS = 10000
 
 def resolve_airfoil(name, field: str = "--airfoil") -> str:
     """The catalogue key of a shipped airfoil (``'NACA 4412'`` -> ``'naca4412'``), or
-    ``InputError(field, "unknown airfoil ...; available: ...")``, the same for every command."""
+    ``InputError(field, "unknown airfoil ...; available: ...")``, the same for every command.
+
+    A generated section is asked for explicitly, with its transition setting
+    (``"NACA 2412@ncrit=9"``, ``"clarky@xtr=0.1"``, ``"my.dat@ncrit=7"``:
+    ``mdo.airfoil.generate``) and passes through unchanged; a bare unknown name is an
+    error rather than a silent (slow, NeuralFoil) generation."""
     from .airfoil import available
     from .catalog import normalize
 
+    if "@" in str(name):
+        return str(name)
     key = normalize(name)
     if key not in available():
         raise InputError(field, f"unknown airfoil {str(name)!r}; available: {', '.join(available())}")
