@@ -28,6 +28,7 @@ import traceback
 from pathlib import Path
 
 from .core.errors import InputError, parse_int
+from .core.signals import exit_code, interrupt_signal, raise_interrupt
 
 _DISCIPLINE_CLIS = (
     "mdo.airfoil.cli",
@@ -75,12 +76,6 @@ def _cmd_options(args) -> int:
     from .nlp.options import describe_options
     print(describe_options(args.problem))
     return 0
-class Terminated(KeyboardInterrupt):
-    """SIGTERM outside a solve (``timeout``, job schedulers): stop like Ctrl-C, exit 143."""
-
-
-def _on_sigterm(signum, frame):
-    raise Terminated
 
 
 class _Progress:
@@ -116,7 +111,7 @@ def _cmd_run(args) -> int:
         except WarmStartError as exc:
             raise RunError(f"--{exc}") from exc
     with contextlib.suppress(ValueError):
-        signal.signal(signal.SIGTERM, _on_sigterm)
+        signal.signal(signal.SIGTERM, raise_interrupt)   # timeout, job schedulers: as Ctrl-C, exit 143
     folder = RunFolder(out, args.force).open()
     try:
         return _run_stages(args, options, folder, ws_data, _Progress(args.quiet))
@@ -316,7 +311,7 @@ def _main(argv=None) -> int:
         print(f"mdo: error: {where}{exc.strerror or exc}", file=sys.stderr)
         return 2
     except KeyboardInterrupt as exc:
-        sig, code = ("SIGTERM", 143) if isinstance(exc, Terminated) else ("SIGINT", 130)
+        sig, code = exit_code(interrupt_signal(exc))
         print(f"mdo: interrupted by {sig}", file=sys.stderr)
         return code
 

@@ -85,3 +85,16 @@ def test_signal_while_building_leaves_nothing(tmp_path, sig, code):
     assert proc.returncode == code, err
     assert f"interrupted by {signal.Signals(sig).name}" in err and "no solve was running" in err
     assert "Traceback" not in err and not (tmp_path / "new").exists()
+
+
+def test_signal_interrupt_names_its_signal_wherever_it_lands():
+    """Both handlers (the solve's and the CLI's) raise SignalInterrupt, so the exit code
+    follows the signal and not the place it landed (a plain KeyboardInterrupt is SIGINT)."""
+    import signal as sig
+
+    from mdo.core.signals import SignalInterrupt, exit_code, interrupt_signal, raise_interrupt
+    with pytest.raises(SignalInterrupt) as info:
+        raise_interrupt(sig.SIGTERM, None)
+    assert isinstance(info.value, KeyboardInterrupt)
+    assert exit_code(interrupt_signal(info.value)) == ("SIGTERM", 143)
+    assert exit_code(interrupt_signal(KeyboardInterrupt())) == ("SIGINT", 130)

@@ -32,6 +32,7 @@ import casadi as ca
 import numpy as np
 
 from ..core.errors import InputError
+from ..core.signals import SignalInterrupt, interrupt_signal
 
 __all__ = ["Problem", "Variable", "ConstraintGroup", "Solution", "SolveError", "WarmStartError",
            "WarmStart", "INTERRUPT_STATUS"]
@@ -169,8 +170,8 @@ def _signals_as_interrupts():
     caught: dict = {}
 
     def handler(signum, frame):
-        caught["signal"] = signum
-        raise KeyboardInterrupt
+        caught.setdefault("signal", int(signum))
+        raise SignalInterrupt(signum)
 
     previous = {}
     for sig in (signal.SIGINT, signal.SIGTERM):
@@ -574,8 +575,8 @@ class Problem:
             try:
                 sol = self.opti.solve()
                 debug = sol
-            except KeyboardInterrupt:
-                caught.setdefault("signal", signal.SIGINT)
+            except KeyboardInterrupt as exc:
+                caught.setdefault("signal", interrupt_signal(exc))
                 debug = self.opti.debug
             except RuntimeError:
                 debug = self.opti.debug
