@@ -2,6 +2,7 @@
 import base64
 import io
 import json
+import math
 import re
 import shutil
 import subprocess
@@ -118,3 +119,15 @@ def test_run_problem_writes_report(tmp_path):
     page = (tmp_path / "run" / "report.html").read_text()
     assert page == report_html(tmp_path / "run")                 # and from the folder's files alone
     assert "polar_ga_mission" in page and len(_imgs(page)) >= 1
+
+
+def test_design_angles_in_degrees(ga2p_run):
+    """solution.json keeps radians; the report shows the twists in degrees."""
+    sol = json.loads((ga2p_run / "solution.json").read_text())
+    twist = next(v for v in sol["variables"] if v["name"] == "main_wing.twist")
+    assert twist["unit"] == "rad"
+    page = report_html(ga2p_run)
+    row = page.split("<td>main_wing.twist</td>", 1)[1].split("</tr>", 1)[0]
+    assert "<td>deg</td>" in row and "rad" not in row.split("<td>", 3)[2]
+    first = float(row.split("[", 1)[1].split(",", 1)[0])
+    assert abs(first - math.degrees(np.ravel(twist["value"])[0])) < 1e-3 * max(1.0, abs(first))

@@ -168,6 +168,15 @@ def _checks(s: dict) -> list[str]:
     return out + ["</table>"]
 
 
+def _as_read(value, unit: str):
+    """Angles in degrees, as a person reads them (solution.json keeps SI radians)."""
+    if unit != "rad":
+        return value, unit
+    import numpy as np
+    deg = np.degrees(np.asarray(value, float))
+    return (deg.tolist() if deg.ndim else float(deg)), "deg"
+
+
 def _design(run: Path, s: dict) -> list[str]:
     out = []
     sol = _json(run / "solution.json")
@@ -175,8 +184,10 @@ def _design(run: Path, s: dict) -> list[str]:
     if design:
         out += ["<h2>Design variables</h2>",
                 "<table><tr><th>name</th><th>value</th><th>unit</th><th>description</th></tr>"]
-        out += [f"<tr><td>{_e(v['name'])}</td><td class='num'>{_num(v['value'])}</td><td>{_e(v['unit'])}</td>"
-                f"<td>{_e(v.get('description', ''))}</td></tr>" for v in design]
+        for v in design:
+            value, unit = _as_read(v["value"], v["unit"])
+            out.append(f"<tr><td>{_e(v['name'])}</td><td class='num'>{_num(value)}</td><td>{_e(unit)}</td>"
+                       f"<td>{_e(v.get('description', ''))}</td></tr>")
         out.append("</table>")
     res = {k: o for k, o in (sol or {}).get("outputs", {}).items() if o.get("summary")}
     if res:
