@@ -47,6 +47,13 @@ def test_every_limit_is_a_named_group_at_every_node():
     assert p.groups["state of charge reserve"].size == 1
     assert p.groups["stall margin"].size == K * int(np.sum(v.strip_exposed & np.isin(
         np.arange(len(v.strip_exposed)), [i for i, s in enumerate(v.vlm.strip_surface) if s == 0])))
+    assert "cell charge current" not in p.groups
+    regen, _, rm = _problem(ga2p(), allow_regeneration=True)   # charging allowed, at the charge rating
+    assert "no battery charging" not in regen.groups
+    g = regen.groups["cell charge current"]
+    assert g.kind == ">=" and g.size == K and g.unit == "A"
+    np.testing.assert_allclose(_initial(regen, g.residual).ravel() * g.scale,
+                               _initial(regen, rm.evaluation.outputs["cell_current_A"].expr).ravel() + 1.7, rtol=1e-9)
     off, *_ = _problem(ga2p(), limits=False)
     assert not any(k in off.groups for k in ("propellers motor power", "cell current", "stall margin"))
 

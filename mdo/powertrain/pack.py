@@ -52,6 +52,9 @@ class Pack:
     (default 8 A, the largest measured current; the model extrapolates beyond).
     ``min_cell_voltage_V``: the loaded-voltage floor offered as a constraint
     (default 2.5 V, the cut-off of the measured curves).
+    ``max_charge_current_A``: the charge-current limit offered as a constraint where
+    windmilling may charge the pack (default 1.7 A, the standard charge current of the
+    Panasonic NCR18650GA data sheet, about 0.5 C).
     """
 
     n_series: float
@@ -61,6 +64,7 @@ class Pack:
     packaging_factor: float = PACKAGING_FACTOR_X57
     max_cell_current_A: float = 8.0
     min_cell_voltage_V: float = 2.5
+    max_charge_current_A: float = 1.7
 
     def __post_init__(self):
         for name in ("n_series", "n_parallel"):
@@ -73,6 +77,7 @@ class Pack:
         check_range("packaging_factor", self.packaging_factor, 1.0, 3.0)
         check_positive("max_cell_current_A", self.max_cell_current_A, "A")
         check_range("min_cell_voltage_V", self.min_cell_voltage_V, 2.0, 4.0, "V")
+        check_positive("max_charge_current_A", self.max_charge_current_A, "A")
 
     # ------------------------------------------------------------ size
     @property

@@ -643,6 +643,10 @@ class Aircraft:
         if not self.allow_regeneration:
             out.append(ResidualGroup("no battery charging", po["cell_current_A"], kind=">=",
                                      scale=pk.max_cell_current_A, unit="A", row_labels=["cell current >= 0"]))
+        else:   # windmilling may charge the pack, at most at the cell's charge rating
+            out.append(ResidualGroup("cell charge current", po["cell_current_A"] + pk.max_charge_current_A,
+                                     kind=">=", scale=pk.max_charge_current_A, unit="A",
+                                     row_labels=["cell current + max charge current"]))
         margin = _num(nodes.parameters.get("stall_margin_cl", _row(self.stall_margin_cl, K))).ravel() * np.ones(K)
         cols = np.flatnonzero(margin >= 0.0)
         if not self.design_point_constraints:

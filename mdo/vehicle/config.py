@@ -225,7 +225,8 @@ class BatteryConfig:
     class of 3.4-3.5 Ah NMC cells, Panasonic data sheet; the measured curves the cell
     model is fitted to reach 8 A, so 8-10 A is an extrapolation of the model) and
     ``min_cell_voltage_V`` (2.5 V, the measured cut-off) are the cell's operating
-    limits; ``reserve_soc``: the state of charge that must remain at the end of the
+    limits, with ``max_charge_current_A`` (1.7 A, the data sheet's standard charge
+    current, about 0.5 C) where the problem lets windmilling charge the pack; ``reserve_soc``: the state of charge that must remain at the end of the
     mission (after the reserve segments).
     """
     cells_series: int
@@ -236,6 +237,7 @@ class BatteryConfig:
     packaging_factor: float = 1.42
     max_cell_current_A: float = 10.0
     min_cell_voltage_V: float = 2.5
+    max_charge_current_A: float = 1.7
     reserve_soc: float = 0.2
     temperature_C: float = 25.0
 
@@ -248,6 +250,7 @@ class BatteryConfig:
         check_range("battery.packaging_factor", self.packaging_factor, 1.0, 3.0)
         check_positive("battery.max_cell_current_A", self.max_cell_current_A, "A")
         check_range("battery.min_cell_voltage_V", self.min_cell_voltage_V, 2.0, 4.0, "V")
+        check_positive("battery.max_charge_current_A", self.max_charge_current_A, "A")
         check_range("battery.reserve_soc", self.reserve_soc, 0.0, 0.9)
 
     @property
@@ -264,7 +267,7 @@ class BatteryConfig:
         from ..powertrain import Pack
         return Pack(self.cells_series, self.cells_parallel, temperature_C=self.temperature_C,
                     packaging_factor=self.packaging_factor, max_cell_current_A=self.max_cell_current_A,
-                    min_cell_voltage_V=self.min_cell_voltage_V)
+                    min_cell_voltage_V=self.min_cell_voltage_V, max_charge_current_A=self.max_charge_current_A)
 
     @property
     def energy_nominal_kWh(self) -> float:
