@@ -80,9 +80,12 @@ def test_clmax_fit_follows_the_surrogate():
     assert float(ca.Function("f", [sym], [clmax_of_re("naca63412", sym)])(6e6)) == pytest.approx(c2)
 
 
-@pytest.mark.parametrize("cfg", [ga2p(), ga8p()], ids=["GA-2P", "GA-8P"])
-def test_swirl_credit_never_exceeds_the_swirl_power_there(cfg):
-    p, v, m = _problem(cfg)
+@pytest.mark.parametrize("cfg,coupling", [(ga2p(), "swirl"), (ga8p(), "swirl"), (ga8p(), "local")],
+                         ids=["GA-2P", "GA-8P", "GA-8P-local"])
+def test_swirl_credit_never_exceeds_the_swirl_power_there(cfg, coupling):
+    """In every coupling: "local" blows the strips' lift forward just the same (the X-57
+    optimum harvested 77 kW from 0.2 kW of swirl before the bound applied to it)."""
+    p, v, m = _problem(cfg, coupling=coupling)
     out = m.evaluation.outputs
     rec = _initial(p, out["swirl_recovered_power_W"].expr).ravel()
     avail = _initial(p, out["swirl_available_power_W"].expr).ravel()

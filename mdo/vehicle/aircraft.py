@@ -42,7 +42,11 @@ thrust (negative near-field drag).  That credit is bounded by the rotational
 kinetic-energy flux the slipstreams carry (``RotorGroupModel.swirl_power_W``):
 the credited power is ``smooth_min(P_recovered, P_available)`` (width 2 % of the
 available power + 10 W), so no node gains more from the swirl than is there; both
-are outputs (``swirl_recovered_power_W``, ``swirl_available_power_W``).
+are outputs (``swirl_recovered_power_W``, ``swirl_available_power_W``).  The bound holds
+in every coupling: with "local" (slipstream dynamic pressure in the wing forces) the
+near-field thrust of the blown strips is the same kind of credit and, unbounded, an
+optimizer windmills the rotors to harvest it (X-57 Mod IV: 77 kW "recovered" on final
+approach from slipstreams carrying 0.2 kW of swirl).
 
 Frames: the mission's path frame (x forward, z up); the wing and wake use body
 axes with x aft, y starboard, z up (``mdo.wing``).
@@ -560,7 +564,8 @@ class Aircraft:
         # swirl: the near-field force along the path is the power recovered from the slipstreams
         recovered = -r["CDi_near"] * q * self.S_ref * V
         available = sum(rot[gm.name]["swirl_W"] for gm in self.groups)
-        if self.coupling == "swirl" and self.swirl_recovery == "bounded":
+        # bounded in every coupling: "local" tilts the slipstream's lift forward just the same
+        if self.swirl_recovery == "bounded":
             credit = smooth_min(recovered, available, 0.02 * available + 10.0)
             D_i = r["D_i"] + (recovered - credit) / ca.sqrt(V * V + 1.0)
         else:
