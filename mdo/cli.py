@@ -142,9 +142,15 @@ def _run_stages(args, options, folder, ws_data, progress) -> int:
     # baseline (design frozen) and starts from that converged mission
     staged = (not args.analysis and ws_data is None and not args.no_baseline
               and any(v.design and not v.frozen for v in problem.variables.values()))
+    if ws_data is None and (staged or args.analysis):
+        code = _relaxed_start(args, options, problem if args.analysis else None, folder, progress)
+        if code is not None:
+            return code
     if staged:
         progress(f"building {args.problem} (baseline: design frozen)")
         baseline = load_problem_file(args.problem, analysis=True, options=options)
+        if getattr(args, "_relaxed", None) is not None:
+            load_warm_start(baseline, args._relaxed, partial=True)
         what = "stage 1 of 2: baseline analysis, design frozen"
         code, sol = _solve_stage(baseline, folder.stage / "analysis", args, what, progress)
         del baseline
@@ -163,6 +169,39 @@ def _run_stages(args, options, folder, ws_data, progress) -> int:
     where = folder.commit(sol.success, sol.status)
     _final_report(sol, where, folder, code, what)
     return code
+
+
+def _relaxed_start(args, options, analysis_problem, folder, progress):
+    """A problem file's ``RELAXED_OPTIONS`` (e.g. ``{"limits": False}``): first solve the
+    analysis with those options into ``relaxed/`` beside the analysis, then start the
+    analysis from it (through the file's ``relaxed_start(run_dir, solution)`` if it has
+    one) - a continuation for a baseline that does not converge from the initial guess.
+    Returns an exit code if that solve failed, else None (``args._relaxed`` holds the start)."""
+    from .nlp.run import load_problem_file, load_warm_start, problem_module
+
+    module = problem_module(args.problem)
+    relaxed_opts = getattr(module, "RELAXED_OPTIONS", None)
+    args._relaxed = None
+    if not relaxed_opts:
+        return None
+    progress(f"building {args.problem} (relaxed start: {relaxed_opts})")
+    relaxed = load_problem_file(args.problem, analysis=True, options={**options, **relaxed_opts})
+    where = folder.stage / ("relaxed" if args.analysis else "analysis/relaxed")
+    what = f"relaxed start of the baseline ({', '.join(f'{k}={v}' for k, v in relaxed_opts.items())})"
+    code, sol = _solve_stage(relaxed, where, args, what, progress)
+    del relaxed
+    if code != 0:
+        out = folder.commit(False, sol.status)
+        _final_report(sol, out, folder, code, what)
+        return code
+    start = sol.to_dict()
+    hook = getattr(module, "relaxed_start", None)
+    if callable(hook):
+        start = hook(where, start)
+    args._relaxed = start
+    if analysis_problem is not None:
+        load_warm_start(analysis_problem, start, partial=True)
+    return None
 
 
 def _solve_stage(problem, stage_dir, args, what, progress) -> tuple:

@@ -206,3 +206,20 @@ def test_problem_file_that_exits_or_returns_nothing(tmp_path, capsys):
         code, _, err = _main(capsys, "run", f, "--out", tmp_path / "out")
         assert code == 2 and needle in _one_line(err)
         assert not (tmp_path / "out").exists()
+
+
+def test_relaxed_start_solves_first_and_hands_on(tmp_path):
+    """A problem file's RELAXED_OPTIONS: the relaxed analysis is solved into relaxed/ and
+    the baseline starts from it (through the file's relaxed_start)."""
+    prob = HERE / "problems" / "relaxed_brachistochrone.py"
+    out = tmp_path / "run"
+    r = _mdo("run", prob, "--out", out, "--quiet")
+    assert r.returncode == 0, r.stderr
+    relaxed = json.loads((out / "analysis" / "relaxed" / "summary.json").read_text())
+    assert relaxed["status"] == "Solve_Succeeded"
+    assert (out / "analysis" / "relaxed" / "relaxed_start_called.txt").exists()
+    assert json.loads((out / "summary.json").read_text())["status"] == "Solve_Succeeded"
+    ana = tmp_path / "ana"
+    r = _mdo("run", prob, "--analysis", "--out", ana, "--quiet")
+    assert r.returncode == 0, r.stderr
+    assert (ana / "relaxed" / "summary.json").exists() and (ana / "summary.json").exists()

@@ -73,6 +73,11 @@ def _import_file(path: Path):
     return module
 
 
+def problem_module(path):
+    """The imported problem file (its module-level settings, e.g. ``RELAXED_OPTIONS``)."""
+    return _import_file(Path(path))
+
+
 def load_problem_file(path, *, analysis: bool = False, options: dict | None = None) -> Problem:
     """Import ``path``, call its ``build(**options)`` and check it returns a Problem."""
     path = Path(path)

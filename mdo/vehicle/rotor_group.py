@@ -274,3 +274,29 @@ class RotorGroupModel:
             lim.append(ResidualGroup(f"{g.name} tip Mach", tip2 - ca.DM.ones(1, K), scale=1.0, unit="-",
                                      kind="<=", row_labels=[f"(M_tip/{g.tip_mach_max:g})^2 - 1"]))
         return lim
+
+
+def motor_ratings_from_mission(config, mission: dict, speed_margin: float = 1.1,
+                               power_margin: float = 1.05) -> dict:
+    """Ratings of the sized motors that a flown mission fits, as initial values.
+
+    ``config``: the ``VehicleConfig``; ``mission``: column name -> per-node array (the
+    run folder's ``mission.csv``, e.g. ``mdo.runfolder.read_run(dir).mission``).  For
+    each group with ``motor.sized``: rated speed ``speed_margin`` x the highest rotor
+    speed (so speed and voltage fit with room), rated power ``power_margin`` x the larger
+    of the highest shaft power per motor and the highest torque x that rated speed (so
+    the torque fits).  Returns ``{"<group>.motor_rated_power": W, "<group>.motor_rated_speed":
+    rad/s}``: a start for a solve with the limits on after one without them, where the
+    ratings sit on their lower bounds because nothing held them up.
+    """
+    out = {}
+    for g in config.rotor_groups:
+        if not g.motor.sized:
+            continue
+        omega = np.asarray(mission[f"{g.name}.rotor_speed_rpm"], float) * u.RPM
+        power = np.asarray(mission[f"{g.name}.shaft_power_W"], float) / g.count
+        torque = power / np.maximum(omega, 1e-6)
+        w_r = speed_margin * float(np.max(omega))
+        out[f"{g.name}.motor_rated_power"] = power_margin * max(float(np.max(torque)) * w_r, float(np.max(power)))
+        out[f"{g.name}.motor_rated_speed"] = w_r
+    return out
