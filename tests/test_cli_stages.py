@@ -39,6 +39,10 @@ def test_no_baseline_and_problems_without_design_run_one_stage(tmp_path):
     r = _mdo("run", POLAR, "--out", tmp_path / "b", "--quiet")   # no design variables
     assert r.returncode == 0, r.stderr
     assert not (tmp_path / "b" / "analysis").exists()
+    # and it says what it is: an analysis, not an "optimization" (issue 23)
+    assert json.loads((tmp_path / "b" / "summary.json").read_text())["mode"] == "analysis"
+    assert (tmp_path / "b" / "summary.md").read_text().startswith("# polar_ga_mission: analysis")
+    assert json.loads((tmp_path / "a" / "summary.json").read_text())["mode"] == "optimization"
 
 
 def test_an_earlier_baseline_is_not_overwritten_unasked(tmp_path):

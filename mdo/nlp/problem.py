@@ -377,6 +377,11 @@ class Problem:
                 v.frozen = True
         self._analysis = True
 
+    @property
+    def is_analysis(self) -> bool:
+        """No free design variable: frozen (``--analysis``) or a problem without any."""
+        return self._analysis or not any(v.design and not v.frozen for v in self.variables.values())
+
     def set_initial(self, name: str, value):
         v = self.variables[name]
         val = np.clip(_broadcast(value, v.shape, "initial guess", name), v.lower, v.upper)
@@ -683,7 +688,7 @@ class Solution:
         timing = {k: float(v) for k, v in stats.items() if k.startswith("t_wall_") or k.startswith("n_call_")}
         sol = cls(problem.name, status, success, iterations, wall_time_s, obj, problem.objective_unit,
                   problem.objective_name, variables, outputs, violations, history,
-                  problem.nlp_size(), timing, analysis=problem._analysis)
+                  problem.nlp_size(), timing, analysis=problem.is_analysis)
         sol.constraints = constraints
         sol.objective_scale = fs
         sol.active = active_limits(sol)
