@@ -81,7 +81,7 @@ OPTIONS = {
 
 # The baseline analysis with every limit on does not converge from the initial guess
 # (IPOPT's dual infeasibility grows to 1e12 in the first 20 iterations); the same analysis
-# with the limits off converges in 8.  `mdo run` therefore solves that first (into
+# with the limits off converges in 8-13.  `mdo run` therefore solves that first (into
 # analysis/relaxed/) and starts the baseline from it, with the motors' ratings re-sized
 # to the relaxed mission (without limits they fall to their lower bounds).
 RELAXED_OPTIONS = {"limits": False}

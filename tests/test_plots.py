@@ -245,13 +245,13 @@ def test_integer_ticks_and_problem_title(monkeypatch, tmp_path):
 
 def test_loading_marks_propellers_on_their_wing():
     from mdo.plots.geometry import read_geometry, rotor_surfaces
-    for name, wing in (("ga2p", "main_wing"), ("ttw", None)):
+    for name, wing in (("ga2p", "main_wing"), ("ttw/analysis", None)):
         g = read_geometry(ROOT / "results" / name / "geometry.json")
         rs = rotor_surfaces(g)
         assert rs and all(s is not None for s, _, _ in rs)
         if wing:
             assert {s for s, _, _ in rs} == {wing}
-    ttw = rotor_surfaces(read_geometry(ROOT / "results" / "ttw" / "geometry.json"))
+    ttw = rotor_surfaces(read_geometry(ROOT / "results" / "ttw" / "analysis" / "geometry.json"))
     assert {s for s, _, _ in ttw} == {"main_wing", "tandem_wing"}   # two rotors on each tandem wing half
 
 
