@@ -18,7 +18,9 @@ def _run(*args):
                           capture_output=True, text=True, cwd=ROOT)
 
 
-@pytest.mark.parametrize("problem", ["ga2p", "ga8p", "ttw"])
+@pytest.mark.parametrize("problem", ["ga2p", "ga8p", pytest.param("ttw", marks=pytest.mark.xfail(
+    strict=True, reason="the TTW optimization does not converge with every limit on (316 iterations, "
+                        "restoration; results/ttw/README.md, issue 20 item 2)"))])
 def test_baseline_analysis_and_optimization(tmp_path, problem):
     """One `mdo run`: the baseline analysis (design frozen) into OUT/analysis, then the
     optimization warm-started from it into OUT."""
