@@ -97,3 +97,16 @@ def rpm_to_radps(x):
 
 def radps_to_rpm(x):
     return x / RPM
+
+
+def as_read(value, unit: str):
+    """``(value, unit)`` as a person reads it: radians in degrees, anything else as is.
+
+    ``value``: a number or (nested) list/array; returns a float array and the unit name.
+    The one conversion the summaries, the run report and ``mdo check`` share.
+    """
+    import numpy as np
+    a = np.asarray(np.nan if value is None else value, dtype=float) + 0.0   # + 0.0: no "-0"
+    if unit == "rad":
+        return np.degrees(a), "deg"
+    return a, unit

@@ -32,6 +32,7 @@ import casadi as ca
 import numpy as np
 
 from ..core.errors import InputError
+from ..core.units import as_read
 from ..core.signals import SignalInterrupt, interrupt_signal
 
 __all__ = ["Problem", "Variable", "ConstraintGroup", "Solution", "SolveError", "WarmStartError",
@@ -843,9 +844,7 @@ def _active_markdown(active: list, top: int = 30) -> list:
 
 def _readable(v, unit: str):
     """A value as people read it: angles in degrees, 4 significant digits."""
-    a = np.asarray(np.nan if v is None else v, dtype=float) + 0.0   # + 0.0: no "-0"
-    if unit == "rad":
-        a, unit = np.degrees(a), "deg"
+    a, unit = as_read(v, unit)
     if a.size == 1:
         return f"{float(a.ravel()[0]):.4g}", unit
     return "[" + ", ".join(f"{x:.4g}" for x in a.ravel()) + "]", unit

@@ -17,6 +17,8 @@ import math
 import re
 from pathlib import Path
 
+from ..core.units import as_read
+
 __all__ = ["write_report_html", "report_html", "markdown_to_html", "FIGURES"]
 
 # figure file -> caption, in the order a designer reads them
@@ -168,15 +170,6 @@ def _checks(s: dict) -> list[str]:
     return out + ["</table>"]
 
 
-def _as_read(value, unit: str):
-    """Angles in degrees, as a person reads them (solution.json keeps SI radians)."""
-    if unit != "rad":
-        return value, unit
-    import numpy as np
-    deg = np.degrees(np.asarray(value, float))
-    return (deg.tolist() if deg.ndim else float(deg)), "deg"
-
-
 def _design(run: Path, s: dict) -> list[str]:
     out = []
     sol = _json(run / "solution.json")
@@ -185,7 +178,8 @@ def _design(run: Path, s: dict) -> list[str]:
         out += ["<h2>Design variables</h2>",
                 "<table><tr><th>name</th><th>value</th><th>unit</th><th>description</th></tr>"]
         for v in design:
-            value, unit = _as_read(v["value"], v["unit"])
+            value, unit = as_read(v["value"], v["unit"])
+            value = value.tolist()
             out.append(f"<tr><td>{_e(v['name'])}</td><td class='num'>{_num(value)}</td><td>{_e(unit)}</td>"
                        f"<td>{_e(v.get('description', ''))}</td></tr>")
         out.append("</table>")
