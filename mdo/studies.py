@@ -7,7 +7,29 @@ from .core.units import KWH
 from .plots import figure_report
 from .vehicle.reports import add_vehicle_reports
 
-__all__ = ["minimize_battery_energy"]
+__all__ = ["minimize_battery_energy", "AIRCRAFT_OPTIONS"]
+
+#: allowed values of the ``-o`` options every whole-mission aircraft problem shares
+#: (``mdo.nlp.options``): a problem file writes ``OPTIONS = {**AIRCRAFT_OPTIONS, ...its own}``
+AIRCRAFT_OPTIONS = {
+    "nodes": (int, 3, 30),
+    "cruise_distance_nmi": (float, 1.0, 300.0),
+    "reserve_cruise_distance_nmi": (float, 1.0, 100.0),
+    "cruise_altitude_ft": (float, 0.0, 25000.0),
+    "cruise_speed_mph": (float, 60.0, 300.0),
+    "cells_series": (int, 10, 400),
+    "cells_parallel": (int, 1, 400),
+    "n_stations": (int, 6, 40),
+    "wing_strips": (int, 8, 60),
+    "mass_model": (str, "buildup", "fixed"),
+    "rotation": (str, "inboard_up", "outboard_up"),
+    "coupling": (str, "swirl", "local", "freestream"),
+    "swirl_recovery": (str, "bounded", "unbounded"),
+    "limits": (bool,),
+    "tip_mach_limit": (str, "nodes", "design_point", "off"),
+    "allow_regeneration": (bool,),
+    "wake_samples": (int, 1, 15),
+}
 
 
 def minimize_battery_energy(problem, vehicle, mission, *, max_iter: int = 500):

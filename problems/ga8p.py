@@ -14,32 +14,15 @@ from dataclasses import replace
 from mdo.core.units import FT, MPH, NMI
 from mdo.mission.profiles import ga_mission
 from mdo.nlp import Problem
-from mdo.studies import minimize_battery_energy
+from mdo.studies import AIRCRAFT_OPTIONS, minimize_battery_energy
 from mdo.vehicle.aircraft import Aircraft
 from mdo.vehicle.catalog import ga8p
 
 
 # allowed values of the -o options (mdo.nlp.options; `mdo run problems/ga8p.py --options`)
-OPTIONS = {
-    "nodes": (int, 3, 30),
-    "cruise_distance_nmi": (float, 1.0, 300.0),
-    "reserve_cruise_distance_nmi": (float, 1.0, 100.0),
-    "cruise_altitude_ft": (float, 0.0, 25000.0),
-    "cruise_speed_mph": (float, 60.0, 300.0),
-    "cells_series": (int, 10, 400),
-    "cells_parallel": (int, 1, 400),
-    "n_stations": (int, 6, 40),
-    "wing_strips": (int, 8, 60),
-    "mass_model": (str, "buildup", "fixed"),
-    "rotation": (str, "inboard_up", "outboard_up"),
-    "coupling": (str, "swirl", "local", "freestream"),
-    "swirl_recovery": (str, "bounded", "unbounded"),
-    "limits": (bool,),
-    "tip_mach_limit": (str, "nodes", "design_point", "off"),
-    "allow_regeneration": (bool,),
+OPTIONS = {**AIRCRAFT_OPTIONS,
     "max_span_m": (float, 5.0, 30.0),
     "approach_drag_area_m2": (float, 0.0, 2.0),
-    "wake_samples": (int, 1, 15),
 }
 
 
