@@ -182,13 +182,13 @@ def test_unwritable_output_refused_before_the_build(tmp_path, capsys, monkeypatc
 
 def test_full_disk_after_the_solve_is_exit_1_and_keeps_the_earlier_run(tmp_path, brach_run, capsys,
                                                                        monkeypatch):
-    from mdo.nlp import problem as nlp_problem
+    from mdo.nlp import solution as nlp_solution   # Solution.save writes through it
     out = _copy(brach_run, tmp_path / "run")
     before = (out / "summary.json").read_text()
 
     def full(path, text):
         raise OSError(errno.ENOSPC, "No space left on device")
-    monkeypatch.setattr(nlp_problem, "write_atomic", full)
+    monkeypatch.setattr(nlp_solution, "write_atomic", full)
     code, _, err = _main(capsys, "run", BRACH, "--out", out, "--quiet", "--force", "--no-baseline")
     line = _one_line(err)
     assert code == 1 and "no space left" in line and "incomplete" in line and "Solve_Succeeded" in line
