@@ -29,9 +29,16 @@ from mdo.core.errors import InputError
 from mdo.core.units import FT, MPH, NMI
 from mdo.mission.profiles import ga_mission
 from mdo.nlp import Problem
-from mdo.studies import minimize_battery_energy
+from mdo.studies import AIRCRAFT_OPTIONS, minimize_battery_energy
 from mdo.vehicle.aircraft import Aircraft, DesignBounds
 from mdo.vehicle.catalog import design_rpm_for_tip_mach, ga8p
+
+# allowed values of the -o options (mdo.nlp.options; `mdo run problems/ga_family.py --options`)
+OPTIONS = {**AIRCRAFT_OPTIONS,
+    "n_props": (int, 2, 12),
+    "max_span_m": (float, 5.0, 30.0),
+    "approach_drag_area_m2": (float, 0.0, 2.0),
+}
 
 N_REF, R_REF_M, THRUST_REF_N, POWER_REF_W, NACELLE_REF_M2 = 8, 0.58, 350.0, 25.19e3, 1.2
 

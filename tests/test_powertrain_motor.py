@@ -4,14 +4,22 @@ import numpy as np
 import pytest
 
 from mdo.core import InputError, units as u
-from mdo.powertrain import DCMotor, PAPER_POWERTRAINS, motor_function, motor_mass_ndarc_kg, paper_powertrain, size_dc_motor
+from mdo.powertrain import DCMotor, motor_function, motor_mass_ndarc_kg, size_dc_motor
+from mdo.vehicle.catalog import ga2p, ga8p, ttw
+
+# the paper's vehicles as data: each definition's first rotor group and battery
+VEHICLES = {c.name: c for c in (ga2p(), ga8p(), ttw())}
 
 
-@pytest.mark.parametrize("name", list(PAPER_POWERTRAINS))
+def paper_powertrain(name):
+    return VEHICLES[name].powertrain()
+
+
+@pytest.mark.parametrize("name", list(VEHICLES))
 def test_sizing_reproduces_rating(name):
     m = paper_powertrain(name).motor
     q, w = m.rated_torque_Nm, m.rated_speed_radps
-    assert q * w == pytest.approx(PAPER_POWERTRAINS[name]["rated_power_W"])
+    assert q * w == pytest.approx(VEHICLES[name].rotor_groups[0].motor.rated_power_W)
     assert m.voltage_V(q, w) == pytest.approx(m.rated_voltage_V, rel=1e-12)
     assert m.efficiency(q, w) == pytest.approx(0.94, rel=1e-12)
     # loss split: 60 % copper at the rated point
@@ -19,7 +27,7 @@ def test_sizing_reproduces_rating(name):
     assert m.current_A(q) ** 2 * m.resistance_ohm == pytest.approx(0.6 * (p_in - q * w), rel=1e-12)
 
 
-@pytest.mark.parametrize("name", list(PAPER_POWERTRAINS))
+@pytest.mark.parametrize("name", list(VEHICLES))
 def test_peak_efficiency_in_band(name):
     """Scan the torque at the rated voltage: the peak efficiency is 85-95 % and
     equals the closed form (Eq. M5)."""
@@ -40,7 +48,7 @@ def test_peak_efficiency_in_band(name):
     assert eta[0] < 0.5 and eta[-1] < eta[k] - 0.005
 
 
-@pytest.mark.parametrize("name", list(PAPER_POWERTRAINS))
+@pytest.mark.parametrize("name", list(VEHICLES))
 def test_torque_speed_line(name):
     """At fixed voltage the speed falls linearly with torque: slope -Kv^2 R, from the
     no-load speed to zero at the stall torque (Eq. M4); the Function agrees."""
@@ -63,7 +71,7 @@ def test_torque_speed_line(name):
 def test_ndarc_mass_regression():
     # W_lb = 0.3928 Q_ftlb^0.8587: 100 ft lbf -> 20.69 lb
     assert motor_mass_ndarc_kg(100 * u.FT * u.LBF) / u.LB == pytest.approx(0.3928 * 100 ** 0.8587)
-    masses = {n: paper_powertrain(n).motor.mass_kg for n in PAPER_POWERTRAINS}
+    masses = {n: paper_powertrain(n).motor.mass_kg for n in VEHICLES}
     # per motor: GA-2P 18.5 kg, GA-8P 5.4 kg, TTW 36.9 kg (lighter per kW at higher rpm)
     assert masses["GA-8P"] < masses["GA-2P"] < masses["TTW"]
     assert 15 < masses["GA-2P"] < 22 and 30 < masses["TTW"] < 45

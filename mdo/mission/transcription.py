@@ -267,6 +267,9 @@ class Mission:
             init = np.broadcast_to(init.reshape(rows, -1) if init.size == rows * K else init, (rows, K))
             col = lambda v: np.broadcast_to(np.asarray(v, float).reshape(-1, 1), (rows, 1)) \
                 if np.size(v) == rows else np.asarray(v, float)  # noqa: E731
+            if u.only_where is not None:   # a control of some segments only (Unknown.only_where)
+                unknowns[u.name] = self._masked_unknown(problem, u, params, init, col)
+                continue
             unknowns[u.name] = problem.variable(f"{P}{u.name}", (rows, K), unit=u.unit,
                                                 scale=np.broadcast_to(col(u.scale), (rows, K)),
                                                 lower=np.broadcast_to(col(u.lower), (rows, K)),
@@ -465,6 +468,27 @@ class Mission:
                     seg_f = fval[si, g.node0:g.node0 + g.n]
                     x[g.state0 + 1:g.state0 + g.n] = x[g.state0] + T * (Collocation(g.n).I @ seg_f)[1:]
                 problem.set_initial(f"{self.prefix}{st.name}", x.reshape(1, -1))
+
+    def _masked_unknown(self, problem, u, params, init, col):
+        """An unknown that exists only at the nodes where the segment parameter
+        ``u.only_where`` is > 0: a variable of those columns, spread to all K nodes with
+        zeros elsewhere (a free variable with no effect would leave the NLP singular)."""
+        K, rows = self.K, int(u.rows)
+        if u.only_where not in params:
+            raise InputError(f"unknown {u.name!r}.only_where", f"a segment parameter of the vehicle, got "
+                                                               f"{u.only_where!r}")
+        active = np.flatnonzero(np.asarray(params[u.only_where], float).ravel() * np.ones(K) > 0.0)
+        if active.size == 0:
+            return ca.DM.zeros(rows, K)
+        n = active.size
+        var = problem.variable(f"{self.prefix}{u.name}", (rows, n), unit=u.unit,
+                               scale=np.broadcast_to(col(u.scale), (rows, n)),
+                               lower=np.broadcast_to(col(u.lower), (rows, n)),
+                               upper=np.broadcast_to(col(u.upper), (rows, n)),
+                               init=init[:, active], description=u.description,
+                               labels=[self.labels[k] for k in active])
+        spread = ca.DM.triplet(list(range(n)), [int(k) for k in active], ca.DM.ones(n), n, K)
+        return ca.densify(ca.mtimes(var, spread))
 
     # ------------------------------------------------------------------ results
     def report_rows(self) -> dict:

@@ -13,14 +13,13 @@ Public surface:
   - loss-model PMSM and inverter (``pmsm.py``).
 * :class:`Powertrain` - the network at mission nodes: ``node_function`` (SX kernel),
   ``evaluate`` (mapped over nodes), ``limits``, ``add_to_problem`` (NLP mode),
-  ``analyze`` / ``balance`` (numeric); :func:`paper_powertrain` for GA-2P, GA-8P, TTW
-  (``network.py``).
+  ``analyze`` / ``balance`` (numeric) (``network.py``); a vehicle's own network is
+  ``VehicleConfig.bus()`` / ``VehicleConfig.powertrain()`` (``mdo.vehicle.config``).
 """
 from .cell import CellModel, load_discharge_data, nmc18650
 from .esc import ESC_EFFICIENCY, esc_input_power_W
 from .motor import DCMotor, motor_function, motor_mass_ndarc_kg, size_dc_motor
-from .network import (Bus, MotorGroup, NODE_INPUTS, NODE_OUTPUTS, PAPER_POWERTRAINS, Powertrain, paper_powertrain,
-                      propeller_torque_law)
+from .network import Bus, MotorGroup, NODE_INPUTS, NODE_OUTPUTS, Powertrain, propeller_torque_law
 from .pmsm import (PMSM, Inverter, drive_function, drive_node, plot_efficiency_map, size_inverter,
                    size_pmsm)
 from .pack import PACKAGING_FACTOR_X57, Pack
@@ -30,7 +29,7 @@ __all__ = [
     "Pack", "PACKAGING_FACTOR_X57",
     "DCMotor", "size_dc_motor", "motor_mass_ndarc_kg", "motor_function",
     "ESC_EFFICIENCY", "esc_input_power_W",
-    "Bus", "MotorGroup", "Powertrain", "paper_powertrain", "PAPER_POWERTRAINS", "propeller_torque_law",
+    "Bus", "MotorGroup", "Powertrain", "propeller_torque_law",
     "NODE_INPUTS", "NODE_OUTPUTS",
     "PMSM", "Inverter", "size_pmsm", "size_inverter", "drive_node", "drive_function",
     "plot_efficiency_map",

@@ -113,8 +113,12 @@ def _cmd_report(args) -> int:
         raise InputError("--out", f"{out} is a symbolic link; refusing to write through it")
     if out.is_dir():   # every file checked before the first is written
         check_new_files([out / f for f in REPORT_FILES], args.force)
+    # the command's data: the catalog's vehicle definitions (the CLI is the edge that
+    # may reach up to them; mdo.powertrain itself knows no vehicle)
+    from ..vehicle.catalog import ga2p, ga8p, ttw
+    powertrains = {c.name: c.powertrain() for c in (ga2p(), ga8p(), ttw())}
     try:
-        files = write_report(out)
+        files = write_report(out, powertrains)
     except OSError as exc:
         raise InputError("--out", f"cannot write into {out}: {exc.strerror or exc}") from None
     for f in files:

@@ -27,16 +27,17 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+import re
+
 import casadi as ca
 import numpy as np
 
-from ..core import units as u
 from ..core.errors import InputError, check_positive, check_range
 from .esc import ESC_EFFICIENCY, ESC_SMOOTHING_W, esc_input_power_W
-from .motor import DCMotor, motor_current, size_dc_motor
+from .motor import DCMotor, motor_current
 from .pack import Pack
 
-__all__ = ["Bus", "MotorGroup", "Powertrain", "NODE_INPUTS", "NODE_OUTPUTS", "paper_powertrain", "PAPER_POWERTRAINS",
+__all__ = ["Bus", "MotorGroup", "Powertrain", "NODE_INPUTS", "NODE_OUTPUTS",
            "propeller_torque_law"]
 
 NODE_INPUTS = ("torque_Nm", "omega_radps", "soc", "battery_current_A", "aux_power_W",
@@ -164,7 +165,9 @@ class Powertrain:
             "power_balance_W": v_pack * ib - p_bus,                                  # N1
             "soc_rate_per_s": pk.cell.soc_rate(i_cell, pk.temperature_C),            # N2
         }
-        self._fn = ca.Function(f"{self.name}_node", [sym[k] for k in NODE_INPUTS],
+        # CasADi names: a letter, then letters, digits and single underscores
+        ident = "_".join(filter(None, re.split(r"[^A-Za-z0-9]+", self.name))) or "powertrain"
+        self._fn = ca.Function(f"pt_{ident}_node", [sym[k] for k in NODE_INPUTS],
                                [out[k] for k in NODE_OUTPUTS], list(NODE_INPUTS), list(NODE_OUTPUTS))
         return self._fn
 
@@ -348,36 +351,6 @@ def propeller_torque_law(rated_torque_Nm, rated_speed_radps):
     (constant C_Q); a stand-in rotor for network tests and the CLI."""
     k = rated_torque_Nm / rated_speed_radps ** 2
     return lambda omega: k * omega * omega
-
-
-# Rated speed: the design rpm of the vehicle catalog (mdo/vehicle/catalog.py: the rpm at
-# which the paper's optimized radius sits at the 0.6 tip-Mach limit); rated voltage: 90 %
-# of the pack's nominal voltage (SUAVE's size_optimal_motor designs at 90 % of nominal).
-PAPER_POWERTRAINS = {
-    "GA-2P": {"n_motors": 2, "rated_power_W": 52.7e3, "rated_rpm": 1665.0, "n_series": 120, "n_parallel": 80},
-    "GA-8P": {"n_motors": 8, "rated_power_W": 25.19e3, "rated_rpm": 3345.0, "n_series": 120, "n_parallel": 80},
-    "TTW": {"n_motors": 8, "rated_power_W": 100e3, "rated_rpm": 1412.0, "n_series": 150, "n_parallel": 120},
-}
-
-
-def paper_powertrain(name: str, rated_rpm: float | None = None, temperature_C: float = 25.0,
-                     rated_voltage_fraction: float = 0.9, aux_power_W: float = 30.0, **motor_kw) -> Powertrain:
-    """The powertrain of one of the paper's vehicles (Table 1).
-
-    ``rated_rpm`` overrides the catalog design rpm; ``aux_power_W`` defaults to
-    avionics 20 W + payload 10 W (SUAVE's X-57 model); ``motor_kw`` go to
-    ``size_dc_motor`` (rated_efficiency, copper_loss_fraction).
-    """
-    key = name.upper().replace("_", "-")
-    if key not in PAPER_POWERTRAINS:
-        raise InputError("vehicle", f"one of {', '.join(PAPER_POWERTRAINS)}, got {name!r}")
-    d = PAPER_POWERTRAINS[key]
-    pack = Pack(d["n_series"], d["n_parallel"], temperature_C=temperature_C)
-    check_range("rated_voltage_fraction", rated_voltage_fraction, 0.5, 1.0)
-    rpm = d["rated_rpm"] if rated_rpm is None else rated_rpm
-    motor = size_dc_motor(d["rated_power_W"], rpm * u.RPM, rated_voltage_fraction * pack.nominal_voltage_V,
-                          **motor_kw)
-    return Powertrain(pack, motor, d["n_motors"], aux_power_W=aux_power_W, name=key.replace("-", "").lower())
 
 
 @dataclass

@@ -315,10 +315,10 @@ def _ga2p_map(path="results/powertrain/pmsm_map.png"):
     """The GA-2P motor's map (rating from the catalog: 52.7 kW at the propeller design rpm,
     on the pack's nominal voltage).  ``python -m mdo.powertrain.pmsm``."""
     from ..vehicle.catalog import ga2p
-    from .network import paper_powertrain
-    g = ga2p().rotor_groups[0]
+    cfg = ga2p()
+    g = cfg.rotor_groups[0]
     w_r = g.design_rpm * 2 * np.pi / 60
-    v_bus = float(paper_powertrain("GA-2P").pack.nominal_voltage_V)
+    v_bus = float(cfg.battery.pack().nominal_voltage_V)
     m = size_pmsm(g.motor_rated_power_W, w_r, v_bus)
     inv = size_inverter(g.motor_rated_power_W / 0.96, v_bus)
     q_r = float(m.rated_torque_Nm)

@@ -110,14 +110,16 @@ def fit_errors_markdown(cell=None) -> str:
     return "\n".join(lines) + "\n"
 
 
-def plot_motors(path):
+def plot_motors(path, powertrains: dict):
+    """Efficiency and torque-speed lines of each powertrain's motor (name -> Powertrain)."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    from .network import PAPER_POWERTRAINS, paper_powertrain, propeller_torque_law
-    fig, axes = plt.subplots(2, 3, figsize=(15, 8))
-    for col, name in enumerate(PAPER_POWERTRAINS):
-        m = paper_powertrain(name).motor
+    from .network import propeller_torque_law
+    n = len(powertrains)
+    fig, axes = plt.subplots(2, n, figsize=(5 * n, 8), squeeze=False)
+    for col, (name, pt) in enumerate(powertrains.items()):
+        m = pt.motor
         law = propeller_torque_law(m.rated_torque_Nm, m.rated_speed_radps)
         q = np.linspace(0.005, 1.6, 400) * m.rated_torque_Nm
         for frac in (1.0, 0.75, 0.5):
@@ -144,7 +146,7 @@ def plot_motors(path):
         for ax in axes[:, col]:
             ax.grid(alpha=0.3)
             ax.legend(fontsize=7)
-    fig.suptitle("DC motors sized for Table 1 (efficiency 0.94, 60 % copper losses at the rated point; rated "
+    fig.suptitle("DC motors at the vehicle definitions' ratings (efficiency 0.94, 60 % copper losses at the rated point; rated "
                  "voltage 0.9 x pack nominal). Dots: peak efficiency (Eq. M5); bottom: torque-speed lines (Eq. M4)",
                  fontsize=10)
     fig.tight_layout()
@@ -152,14 +154,14 @@ def plot_motors(path):
     plt.close(fig)
 
 
-def balance_markdown() -> str:
-    from .network import PAPER_POWERTRAINS, paper_powertrain, propeller_torque_law
+def balance_markdown(powertrains: dict) -> str:
+    """The network balance over throttle of each powertrain (name -> Powertrain)."""
+    from .network import propeller_torque_law
     th = np.linspace(0.1, 1.0, 10)
     lines = ["# Network balance over throttle (propeller load Q = Q_r (omega/omega_r)^2, s = 0.9, 25 deg C)", "",
              "Solved by nested bisection; Newton from a cold start (omega = half no-load speed, I_b = 0) "
              "converges to the same point (tests/test_powertrain_network.py).", ""]
-    for name in PAPER_POWERTRAINS:
-        pt = paper_powertrain(name)
+    for name, pt in powertrains.items():
         m = pt.motor
         b = pt.balance(th, propeller_torque_law(m.rated_torque_Nm, m.rated_speed_radps), soc=0.9)
         n = pt.balance(th, propeller_torque_law(m.rated_torque_Nm, m.rated_speed_radps), soc=0.9, method="newton")
@@ -177,7 +179,10 @@ def balance_markdown() -> str:
     return "\n".join(lines)
 
 
-def write_report(out_dir) -> list:
+def write_report(out_dir, powertrains: dict) -> list:
+    """The cell fit against the measured curves, and the motors and network balance of
+    ``powertrains`` (name -> :class:`~mdo.powertrain.Powertrain`, e.g. a vehicle
+    definition's ``VehicleConfig.powertrain()``)."""
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     files = [out / "discharge_fit.png", out / "discharge_residuals.png", out / "fit_errors.md",
@@ -185,6 +190,6 @@ def write_report(out_dir) -> list:
     plot_discharge_fit(files[0])
     plot_residuals(files[1])
     files[2].write_text(fit_errors_markdown())
-    plot_motors(files[3])
-    files[4].write_text(balance_markdown())
+    plot_motors(files[3], powertrains)
+    files[4].write_text(balance_markdown(powertrains))
     return files

@@ -464,6 +464,10 @@ class Aircraft:
         out = [u_ for gm in self.groups for u_ in gm.unknowns()]
         out.append(Unknown(spec["name"], unit=spec["unit"], scale=spec["scale"], lower=spec["lower"],
                            upper=spec["upper"], description=spec["description"]))
+        # gear/flap deployment: a control only where a segment allows a drag device
+        out.append(Unknown("drag_device_deployment", unit="-", scale=1.0, lower=0.0, upper=1.0,
+                           description="gear/flap deployment on approach (fraction of drag_device_area_m2)",
+                           only_where="drag_device_area_m2"))
         return out
 
     def states(self):
@@ -497,7 +501,7 @@ class Aircraft:
         pitch = nodes.parameters.get("pitch_command_rad", _row(0.0, K))
         env = dict(K=K, rho=rho, mu=mu, a_s=a_s, V=V, alpha=alpha, wma=wma, pitch=pitch)
         rot = {gm.name: self._rotor_nodes(gm, nodes, unknowns, env) for gm in self.groups}
-        aero = self._aerodynamics(nodes, rot, env)
+        aero = self._aerodynamics(nodes, unknowns, rot, env)
         F_t, F_n = -aero["D"], aero["L"]
         for gm in self.groups:
             o = rot[gm.name]
@@ -514,11 +518,12 @@ class Aircraft:
         if self.limits_on:
             residuals += self._limits(nodes, rot, po, aero, env)
         out = self._outputs(nodes, rot, aero, po, env)
-        self._last = {"vlm": aero["vlm"], "bemt": rot[self.groups[0].name]["bemt"], "powertrain": po,
-                      "rotors": rot}
+        dist = {"strip_cl": Output(aero["vlm"]["cl"], "-", "section lift coefficient of each lattice strip "
+                                                         "(with the wakes)")}
         return NodeEvaluation(mass_kg=self.togw, force_along_path_N=F_t, force_normal_N=F_n, residuals=residuals,
                               force_scale_N=self.togw_baseline_kg * G0,
-                              state_derivatives={"state_of_charge": po["soc_rate_per_s"]}, outputs=out)
+                              state_derivatives={"state_of_charge": po["soc_rate_per_s"]}, outputs=out,
+                              distributions=dist)
 
     def _rotor_nodes(self, gm, nodes, unknowns, env) -> dict:
         """One group's BEMT at every node, masked where the segment stops it."""
@@ -542,7 +547,7 @@ class Aircraft:
                 "active": act, "on": on, "off": off,
                 "swirl_W": a * gm.swirl_power_W(bm, v_ax, env["rho"]) * g.count}
 
-    def _aerodynamics(self, nodes, rot, env) -> dict:
+    def _aerodynamics(self, nodes, unknowns, rot, env) -> dict:
         """Wake at the wing, the lattice, the bounded swirl credit and the drag build-up."""
         K, V, rho, mu, a_s, alpha, wma = (env[k] for k in ("K", "V", "rho", "mu", "a_s", "alpha", "wma"))
         gam_r, om_r, vw_r = [], [], []
@@ -570,8 +575,28 @@ class Aircraft:
             D_i = r["D_i"] + (recovered - credit) / ca.sqrt(V * V + 1.0)
         else:
             credit, D_i = recovered, r["D_i"]
-        pd = profile_drag(self.vlm, r, rho, mu, mach)
-        L_stall, D_stall = stall_correction(self.vlm, r, pd, rho, V) if self.wing_stall else (0.0, 0.0)
+        stopped = {gm.name: _row(1.0 - rot[gm.name]["active"]) for gm in self.groups if rot[gm.name]["off"].size}
+        b = self.drag_buildup(self.vlm, r, rho, mu, V, mach, stopped)
+        pd, L_stall, D_folded = b["pd"], b["L_stall"], b["D_folded"]
+        D_device, deploy = self._drag_device(nodes, unknowns, q)
+        D_parasite = b["D_parasite"] + D_device
+        return {"vlm": r, "pd": pd, "D": D_i + D_parasite, "L": r["L"] + L_stall, "D_i": D_i,
+                "D_parasite": D_parasite, "D_device": D_device, "deploy": deploy, "q": q, "D_folded": D_folded,
+                "swirl_recovered_W": recovered, "swirl_available_W": available, "swirl_credit_W": credit}
+
+    def drag_buildup(self, vlm, r, rho, mu, V, mach, stopped=None) -> dict:
+        """Everything but the induced drag and the approach drag device, for a lattice
+        solution ``r`` of ``vlm`` (rows 1 x K, numbers or CasADi): section profile drag
+        (:func:`~mdo.wing.profile_drag`), the post-stall strips of a tilt-wing
+        (:func:`stall_correction`), fuselage and nacelles (Raymer's component build-up,
+        :func:`~mdo.wing.body_drag`), fins (flat-plate skin friction x form factor x
+        wetted area 2.04 S), the drag area of each stopped/folded group times
+        ``stopped[group]`` (1 x K fraction), all times ``1 + misc_drag_fraction``.
+        The model and the initial guess both use it.  Returns ``pd`` (profile drag
+        terms), ``L_stall``, ``D_folded`` and ``D_parasite`` (N)."""
+        q = 0.5 * rho * V * V
+        pd = profile_drag(vlm, r, rho, mu, mach)
+        L_stall, D_stall = stall_correction(vlm, r, pd, rho, V) if self.wing_stall else (0.0, 0.0)
         D_bodies, _ = body_drag(self.bodies, V, rho, mu, mach)
         D_fin = 0.0
         for f in self.fins:
@@ -583,13 +608,10 @@ class Aircraft:
         D_folded = 0.0
         for gm in self.groups:
             A = gm.config.folded_drag_area_m2
-            if A and rot[gm.name]["off"].size:
-                D_folded = D_folded + q * _row(1.0 - rot[gm.name]["active"]) * gm.config.count * A
-        D_device, deploy = self._drag_device(nodes, q)
-        D_parasite = (pd["D_p"] + D_stall + D_bodies + D_fin + D_folded) * (1.0 + self.misc_drag_fraction) + D_device
-        return {"vlm": r, "pd": pd, "D": D_i + D_parasite, "L": r["L"] + L_stall, "D_i": D_i,
-                "D_parasite": D_parasite, "D_device": D_device, "deploy": deploy, "q": q, "D_folded": D_folded,
-                "swirl_recovered_W": recovered, "swirl_available_W": available, "swirl_credit_W": credit}
+            if A and stopped is not None and gm.name in stopped:
+                D_folded = D_folded + q * stopped[gm.name] * gm.config.count * A
+        D_parasite = (pd["D_p"] + D_stall + D_bodies + D_fin + D_folded) * (1.0 + self.misc_drag_fraction)
+        return {"pd": pd, "L_stall": L_stall, "D_folded": D_folded, "D_parasite": D_parasite}
 
     def _flap_upwash(self, nodes, v_cp, V):
         """Deflected flaps as an incidence increment of the flapped strips in the flow
@@ -667,7 +689,7 @@ class Aircraft:
         return out
 
     def _outputs(self, nodes, rot, aero, po, env) -> dict:
-        K, V, alpha, rho = env["K"], env["V"], env["alpha"], env["rho"]
+        V, alpha = env["V"], env["alpha"]
         r, q = aero["vlm"], aero["q"]
         T_tot = sum(gm.config.count * rot[gm.name]["T"] for gm in self.groups)
         P_shaft = sum(gm.config.count * rot[gm.name]["Q"] * rot[gm.name]["omega"] for gm in self.groups)
@@ -707,7 +729,9 @@ class Aircraft:
                    "shaft_power_W": Output(g.count * o["Q"] * o["omega"], "W"),
                    "motor_power_fraction": Output(o["Q"] * o["omega"] / gm.design["P_rated"], "-",
                                                   "shaft power / continuous rating"),
-                   "throttle": Output(mo["throttle"], "-"), "motor_efficiency": Output(eff, "-")}
+                   "throttle": Output(mo["throttle"], "-"), "motor_efficiency": Output(eff, "-"),
+                   "induced_axial_velocity_mps": Output(o["bemt"]["va_mean_mps"], "m/s",
+                                                        "mean axial induced velocity at the disk (wake pitch)")}
             for k, v in per.items():
                 out[f"{g.name}.{k}"] = v
             if i == 0:   # the first group under the plain names (single-group reports)
@@ -715,26 +739,27 @@ class Aircraft:
                     out[k] = per[k]
         return out
 
-    def _drag_device(self, nodes, q):
+    def _drag_device(self, nodes, unknowns, q):
         """Gear/flap drag where the segment allows it (``drag_device_area_m2`` > 0):
-        ``D = q A_max delta`` with the deployment ``delta`` in [0, 1] a control of those
-        nodes only (elsewhere it would be a free variable with no effect).  Its lift
-        change is neglected.  Returns (drag row, deployment row)."""
+        ``D = q A_max delta`` with the deployment ``delta`` in [0, 1] the unknown
+        ``drag_device_deployment`` (a variable of those nodes only, zero elsewhere; the
+        mission creates it, see :meth:`unknowns`).  Its lift change is neglected.
+        Returns (drag row, deployment row)."""
         K = nodes.size
-        area = _num(nodes.parameters.get("drag_device_area_m2", _row(0.0, K))).ravel()
-        active = np.flatnonzero(area > 0.0)
-        if active.size == 0:
-            return 0.0 * q, ca.DM.zeros(1, K)
-        delta = self._problem.variable(
-            "drag_device_deployment", (1, active.size), unit="-", scale=1.0, lower=0.0, upper=1.0, init=0.0,
-            description="gear/flap deployment on approach (fraction of drag_device_area_m2)",
-            labels=[nodes.labels[k] for k in active])
-        spread = ca.DM.triplet(list(range(active.size)), [int(k) for k in active], ca.DM.ones(active.size),
-                               active.size, K)
-        deploy = ca.densify(ca.mtimes(delta, spread))
+        area = _num(nodes.parameters.get("drag_device_area_m2", _row(0.0, K))).ravel() * np.ones(K)
+        deploy = unknowns.get("drag_device_deployment", ca.DM.zeros(1, K))
         return q * _row(area) * deploy, deploy
 
     # ------------------------------------------------------------------ guesses
+    def guess_motor_rating(self, gm, power_W: float, speed_radps: float) -> None:
+        """Start a sized group's motor rating (its design variables) at these values,
+        clipped to their bounds; the initial guess calls it (:mod:`mdo.vehicle.guess`)."""
+        if self._problem is None or not gm.config.motor.sized:
+            return
+        for name, value in ((f"{gm.name}.motor_rated_power", power_W), (f"{gm.name}.motor_rated_speed", speed_radps)):
+            var = self._problem.variables[name]
+            self._problem.set_initial(name, float(np.clip(value, np.min(var.lower), np.max(var.upper))))
+
     def initial_guess(self, nodes) -> dict:
         """Physics-based guesses at the baseline design (:mod:`mdo.vehicle.guess`)."""
         from .guess import initial_guess

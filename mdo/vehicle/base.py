@@ -86,6 +86,9 @@ class Unknown:
     ``scale`` is a typical magnitude (IPOPT sees value/scale); ``lower``/``upper``
     are bounds in ``unit``; each may be a number or a sequence of ``rows``
     numbers.  ``row_labels`` name the rows (e.g. ``["front", "rear"]``).
+    ``only_where``: the name of a segment parameter; the unknown is then a variable
+    only at the nodes where that parameter is > 0 (a control some segments allow,
+    e.g. a drag device on approach) and the vehicle sees zeros elsewhere.
     """
 
     name: str
@@ -96,6 +99,7 @@ class Unknown:
     rows: int = 1
     description: str = ""
     row_labels: Sequence[str] | None = None
+    only_where: str | None = None
 
 
 @dataclass(frozen=True)
@@ -184,7 +188,9 @@ class NodeEvaluation:
     state to its 1 x K rate; ``outputs`` maps names to :class:`Output` (the
     mission's report looks for ``CL``, ``thrust_N``, ``rotor_speed_rpm``,
     ``shaft_power_W``, ``battery_power_W``, ``state_of_charge`` and writes every
-    1 x K output it is given).
+    1 x K output it is given).  ``distributions`` are quantities along a span or a
+    blade at every node (rows x K: section cl per lattice strip, ...), for reports;
+    they are not columns of the mission table.
     """
 
     mass_kg: Any
@@ -194,6 +200,7 @@ class NodeEvaluation:
     force_scale_N: float | None = None          # typical force (weight) for scaling the force balance
     state_derivatives: dict = field(default_factory=dict)
     outputs: dict = field(default_factory=dict)
+    distributions: dict = field(default_factory=dict)   # name -> Output, rows x K (spanwise, radial)
 
 
 @runtime_checkable

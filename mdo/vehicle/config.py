@@ -390,3 +390,35 @@ class VehicleConfig:
     @property
     def rotors(self) -> int:
         return sum(g.count for g in self.rotor_groups)
+
+    def _motor(self, group: RotorGroupConfig, pack):
+        """A group's DC motor at its configured rating (Eq. M6 at the rated voltage)."""
+        from ..core import units as u
+        from ..powertrain import size_dc_motor
+        m = group.motor
+        return size_dc_motor(m.rated_power_W, group.motor_rated_rpm * u.RPM,
+                             m.rated_voltage_fraction * pack.nominal_voltage_V, rated_efficiency=m.rated_efficiency,
+                             copper_loss_fraction=m.copper_loss_fraction)
+
+    def bus(self):
+        """The electrical network with every motor at its configured rating, as numbers
+        (``mdo.powertrain.Bus``: this battery's pack, one motor group per rotor group,
+        the avionics and payload load)."""
+        from ..powertrain import Bus, MotorGroup
+        pack = self.battery.pack()
+        groups = [MotorGroup(g.name, self._motor(g, pack), g.count, esc_efficiency=g.motor.esc_efficiency)
+                  for g in self.rotor_groups]
+        return Bus(pack, groups, aux_power_W=self.aux_power_W)
+
+    def powertrain(self, group: str | None = None):
+        """This battery and one rotor group's motors (default the first group) as a
+        ``mdo.powertrain.Powertrain``: the single-group network of ``mdo battery report``
+        (efficiency maps, balance over throttle)."""
+        g = self.rotor_groups[0] if group is None else next(
+            (x for x in self.rotor_groups if x.name == group), None)
+        if g is None:
+            raise InputError("group", f"one of {', '.join(x.name for x in self.rotor_groups)}, got {group!r}")
+        from ..powertrain import Powertrain
+        pack = self.battery.pack()
+        return Powertrain(pack, self._motor(g, pack), g.count, esc_efficiency=g.motor.esc_efficiency,
+                          aux_power_W=self.aux_power_W, name=self.name)

@@ -10,25 +10,11 @@ import numpy as np
 
 from ..core.atmosphere import atmosphere
 from ..rotor import PHI_MAX_RAD, PHI_MIN_RAD, analyze_inputs
-from ..wing import VLM, body_drag, profile_drag
+from ..wing import VLM
 from .base import G0
-from .stall import stall_correction
 
-__all__ = ["initial_guess", "bemt_numeric", "omega_for_thrust", "numeric_bus"]
+__all__ = ["initial_guess", "bemt_numeric", "omega_for_thrust"]
 
-
-def numeric_bus(ac):
-    """The vehicle's network with every motor at its configured rating (numbers)."""
-    from ..powertrain import Bus, MotorGroup, size_dc_motor
-    from ..core import units as u
-    groups = []
-    for gm in ac.groups:
-        g, m = gm.config, gm.config.motor
-        motor = size_dc_motor(m.rated_power_W, g.motor_rated_rpm * u.RPM,
-                              m.rated_voltage_fraction * ac.pack.nominal_voltage_V, rated_efficiency=m.rated_efficiency,
-                              copper_loss_fraction=m.copper_loss_fraction)
-        groups.append(MotorGroup(g.name, motor, g.count, esc_efficiency=m.esc_efficiency))
-    return Bus(ac.pack, groups, aux_power_W=ac.config.aux_power_W)
 
 def initial_guess(ac, nodes) -> dict:
     """Physics-based guesses at the baseline design: lattice lift for the angle of
@@ -67,6 +53,8 @@ def initial_guess(ac, nodes) -> dict:
     free = np.isnan(theta_in)
     theta = np.where(free, alpha + gam, theta_in)
     DM = lambda x: ca.DM(np.asarray(x, float).reshape(1, -1))  # noqa: E731
+    active = {gm.name: np.asarray(nodes.parameters.get(f"{gm.name}.active", np.ones(K)), float).ravel()
+              * np.ones(K) for gm in ac.groups}
     vectored = tilting & (np.abs(wma) > np.radians(5.0))
 
     def forces(th, sel):
@@ -78,14 +66,11 @@ def initial_guess(ac, nodes) -> dict:
         r = vlm.solve(DM(wa), DM(V[sel]), rho=DM(rho[sel]), mach=DM(V[sel] / a_s[sel]),
                       v_ext=None if vz is None else (zero, zero, vz), v_ext_bound=None if vz is None else
                       (zero, zero, zero))
-        pdn = profile_drag(vlm, r, DM(rho[sel]), DM(mu[sel]), DM(V[sel] / a_s[sel]))
-        Ls, Ds = (np.asarray(x, float).ravel() for x in stall_correction(
-            vlm, r, pdn, DM(rho[sel]), DM(V[sel]))) if ac.wing_stall else (0.0, 0.0)
-        Db = np.asarray(body_drag(ac.bodies, DM(V[sel]), DM(rho[sel]), DM(mu[sel]),
-                                  DM(V[sel] / a_s[sel]))[0]).ravel()
-        Dn = np.asarray(r["D_i"]).ravel() + (np.asarray(pdn["D_p"]).ravel() + Ds + Db) * \
-            (1 + ac.misc_drag_fraction) * 1.05
-        Ln = np.asarray(r["L"]).ravel() + Ls
+        idx = np.flatnonzero(sel) if sel.dtype == bool else np.asarray(sel)
+        stopped = {gm.name: DM(1.0 - active[gm.name][idx]) for gm in ac.groups}
+        b = ac.drag_buildup(vlm, r, DM(rho[sel]), DM(mu[sel]), DM(V[sel]), DM(V[sel] / a_s[sel]), stopped)
+        Dn = np.asarray(r["D_i"]).ravel() + np.asarray(b["D_parasite"], float).ravel()   # the model's build-up
+        Ln = np.asarray(r["L"]).ravel() + np.asarray(b["L_stall"], float).ravel()
         nt = Dn + m * (G0 * np.sin(gam[sel]) + acc[sel])
         nn = m * (G0 * np.cos(gam[sel]) + V[sel] * gdot[sel]) - Ln
         return nt, nn
@@ -160,7 +145,7 @@ def _rotor_guesses(ac, nodes, theta, alpha, vectored, need_t, need_n, V, h, wma,
         torques.append(np.where(acts[gm.name], Q1, 0.0))
         omegas.append(omega)
     soc = np.asarray(nodes.states.get("state_of_charge", np.ones(K)), float).ravel() * np.ones(K)
-    po = numeric_bus(ac).analyze(torques, omegas, np.clip(soc, 0.05, 1.0))
+    po = ac.config.bus().analyze(torques, omegas, np.clip(soc, 0.05, 1.0))
     out["battery_current_A"] = np.asarray(po["battery_current_A"], float).ravel()
     return out
 
@@ -168,16 +153,12 @@ def _rotor_guesses(ac, nodes, theta, alpha, vectored, need_t, need_n, V, h, wma,
 def _size_motor_guess(ac, gm, nodes, Q1, omega, active):
     """Initial motor rating of a sized group: the least that meets the power, torque and
     speed limits at the guessed operating points (+5 %), so the limits start satisfied."""
-    m = gm.config.motor
-    if not m.sized or ac._problem is None or not active.any():
+    if not gm.config.motor.sized or not active.any():
         return
     f = gm.short_time_row(nodes)
     w_r = 1.02 * float(np.max(omega[active]))          # throttle and speed limits met with margin
     P_r = 1.05 * max(float(np.max((Q1 * omega / f)[active])), float(np.max((Q1 * w_r / f)[active])), 1.0)
-    for name, value, var in ((f"{gm.name}.motor_rated_power", P_r, "P_rated"),
-                             (f"{gm.name}.motor_rated_speed", w_r, "omega_rated")):
-        lo, hi = ac._problem.variables[name].lower, ac._problem.variables[name].upper
-        ac._problem.set_initial(name, float(np.clip(value, np.min(lo), np.max(hi))))
+    ac.guess_motor_rating(gm, P_r, w_r)
 
 
 def bemt_numeric(gm, omega, v_ax, v_ip, h, pitch, n_azimuth=1):

@@ -72,12 +72,11 @@ def _design_numbers(vehicle, solution) -> dict:
 
 def _loading(vehicle, mission, solution, k):
     """Strip y, chord and cl with and without the wakes at node k (numbers)."""
-    r = vehicle._last["vlm"]
     vlm = vehicle.vlm
     g = vlm.geometry
     y = _val(solution, g["strip_mid"])[1, :]
     chord = _val(solution, g["strip_chord"]).ravel()
-    cl_on = _val(solution, r["cl"])[:, k]
+    cl_on = _val(solution, mission.evaluation.distributions["strip_cl"].expr)[:, k]
     cond = mission.cond
     alpha = cond.body_angle_rad[:, k] - cond.flight_path_angle_rad[:, k]
     if vehicle.config.kind == "tilt_wing":
@@ -154,7 +153,8 @@ def _geometry_numbers(vehicle, mission, solution, k: int) -> dict:
     for gm in vehicle.groups:
         R = float(_val(solution, gm.design["R"]))
         om = float(_val(solution, mission.unknowns[f"{gm.name}.omega"]).ravel()[k])
-        va = float(_val(solution, vehicle._last["rotors"][gm.name]["bemt"]["va_mean_mps"]).ravel()[k])
+        va = float(_val(solution, mission.evaluation.outputs[f"{gm.name}.induced_axial_velocity_mps"].expr)
+                   .ravel()[k])
         # helix pitch of the fixed wake: (V + mean induced axial velocity) per revolution
         pitch = 2 * math.pi * (V + va) / max(om, 1e-6)
         pitch0 = pitch if pitch0 is None else pitch0

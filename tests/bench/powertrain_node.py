@@ -12,7 +12,7 @@ import numpy as np
 
 from mdo.core import Collocation
 from mdo.nlp import Problem
-from mdo.powertrain import paper_powertrain
+from mdo.vehicle import catalog
 
 
 def median_time(fn, repeats=7):
@@ -26,7 +26,7 @@ def median_time(fn, repeats=7):
 
 def bench(K, name="TTW"):
     t = time.perf_counter()
-    pt = paper_powertrain(name)
+    pt = {"GA-2P": catalog.ga2p, "GA-8P": catalog.ga8p, "TTW": catalog.ttw}[name]().powertrain()
     f = pt.node_function()
     t_build = time.perf_counter() - t
     m = pt.motor
