@@ -9,10 +9,11 @@ ours (stated, not from the paper; n = 8 gives GA-8P's initial design back — in
 
 * positions equally spaced from inboard to the tip, ``eta_i = i/k`` (i = 1..k), as GA-8P's
   0.25 ... 1.00 (n = 2: one wing-tip propeller a side, NOT GA-2P's eta = 0.23);
-* the same total disk area as GA-8P: ``R0 = 0.58 m sqrt(8/n)``, capped at 0.9 R_max, and
-  the radius bounded above by ``R_max = (b/(2k) - c)/2``, the radius at which neighbouring
-  disks touch (clearance c = 0.05 m, ``DesignBounds.tip_clearance_m``) at the baseline
-  span; the design-point disk-clearance constraint keeps them apart as the span moves;
+* the same total disk area as GA-8P: ``R0 = 0.58 m sqrt(8/n)``, capped at 0.9 R_max, with
+  ``R_max = (b/(2k) - c)/2`` the radius at which neighbouring disks touch at the baseline
+  span (clearance c = 0.05 m, ``DesignBounds.tip_clearance_m``); the radius bounds are
+  GA-8P's (``DesignBounds``), and the disk-clearance constraint keeps the disks apart
+  as span and radius move (an extra box at R_max would be a baseline-span copy of it);
 * the same total design thrust (8 x 350 N) and initial motor rating (8 x 25.19 kW, the
   optimizer sizes the motors) shared by n;
 * design rpm for tip Mach 0.6 at 0.55/0.58 R0 and 138.58 mph (GA-8P's rule, catalog.py);
@@ -70,16 +71,14 @@ def build(analysis: bool = False, n_props: int = 8, nodes: int = 6, cruise_dista
           coupling: str = "swirl", swirl_recovery: str = "bounded", limits: bool = True,
           tip_mach_limit: str = "nodes", allow_regeneration: bool = False, max_span_m: float | None = None,
           approach_drag_area_m2: float = 0.40, wake_samples: int = 5):
-    cfg, r_max = family_config(n_props, rotation)
+    cfg, _ = family_config(n_props, rotation)
     cfg = replace(cfg, battery=replace(cfg.battery, cells_series=cells_series, cells_parallel=cells_parallel),
                   cruise_speed_mps=cruise_speed_mph * MPH, cruise_altitude_m=cruise_altitude_ft * FT)
-    r0 = cfg.rotor_groups[0].radius_m
-    bounds = DesignBounds(tip_radius=(DesignBounds().tip_radius[0], min(DesignBounds().tip_radius[1], r_max / r0)))
     p = Problem("ga_family", f"GA-{n_props}P whole-mission optimization (GA family, Eq. 7)")
     vehicle = Aircraft(cfg, free=("rotor", "wing"), n_stations=n_stations, wing_strips=wing_strips,
                        mass_model=mass_model, coupling=coupling, swirl_recovery=swirl_recovery, limits=limits,
                        tip_mach_limit=tip_mach_limit, allow_regeneration=allow_regeneration, max_span_m=max_span_m,
-                       design_point_constraints=not analysis, wake_samples=wake_samples, bounds=bounds)
+                       design_point_constraints=not analysis, wake_samples=wake_samples)
     mission = ga_mission(vehicle, nodes=nodes, cruise_distance_m=cruise_distance_nmi * NMI,
                          reserve_cruise_distance_m=reserve_cruise_distance_nmi * NMI,
                          cruise_altitude_m=cruise_altitude_ft * FT, cruise_speed_mps=cruise_speed_mph * MPH,
