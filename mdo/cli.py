@@ -283,8 +283,10 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("--options", action="store_true",
                      help="list the problem's options (type, default, allowed values, documentation) and exit")
     run.add_argument("--quiet", action="store_true", help="no IPOPT log on the terminal (still in the file)")
-    run.add_argument("--hessian", choices=("exact", "limited-memory"), default="exact",
-                     help="exact Hessian of the Lagrangian (default) or IPOPT's L-BFGS approximation")
+    run.add_argument("--hessian", choices=("exact", "full", "limited-memory"), default="exact",
+                     help="exact Hessian of the Lagrangian, split into its node block and global rows "
+                          "(default); full: the same matrix by one colouring of all variables (slower); "
+                          "limited-memory: IPOPT's L-BFGS approximation")
     run.set_defaults(func=_cmd_run)
 
     chk = sub.add_parser("check", help="check a run folder against its limits (exit 1 if one is exceeded)",

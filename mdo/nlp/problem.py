@@ -31,9 +31,13 @@ import numpy as np
 
 from ..core.errors import InputError
 from ..core.signals import SignalInterrupt, interrupt_signal
+from .hessian import lagrangian_hessian_functions
 # re-exported: the solved side lives in mdo.nlp.solution
 from .solution import (ACTIVE_SLACK, DESIGN_BOUND_FRACTION, Solution, _readable, _variable_arrays,  # noqa: F401
                        element_label, group_residual, write_atomic)
+
+#: ``Problem.solve(hessian=...)``: exact (split by structure), exact (one colouring), quasi-Newton
+HESSIAN_CHOICES = ("exact", "full", "limited-memory")
 
 __all__ = ["Problem", "Variable", "ConstraintGroup", "Solution", "SolveError", "WarmStartError",
            "WarmStart", "INTERRUPT_STATUS"]
@@ -536,6 +540,9 @@ class Problem:
 
         Returns a ``Solution`` whatever the outcome (check ``.success``); with
         ``raise_on_failure`` a failed solve raises ``SolveError`` carrying it.
+        ``hessian``: ``"exact"`` (default: the exact Hessian split into its node block
+        and global rows, :mod:`mdo.nlp.hessian`), ``"full"`` (the same matrix from
+        CasADi's one colouring of all variables, slower) or ``"limited-memory"``.
         SIGINT and SIGTERM stop IPOPT and keep the last iterate (status
         ``Interrupted_By_User`` / ``Terminated_By_Signal``).  ``progress(text)`` is
         told of the silent phases.
@@ -545,6 +552,8 @@ class Problem:
         ipopt = dict(self.ipopt_options)
         if max_iter is not None:
             ipopt["max_iter"] = int(max_iter)
+        if hessian not in HESSIAN_CHOICES:
+            raise InputError("hessian", f"one of {', '.join(HESSIAN_CHOICES)}, got {hessian!r}")
         if hessian == "limited-memory":
             ipopt["hessian_approximation"] = "limited-memory"
         ipopt["print_level"] = 5 if verbose else 0
@@ -566,6 +575,8 @@ class Problem:
             ipopt.update(options)
         plugin = {"detect_simple_bounds": True, "print_time": verbose,
                   "error_on_fail": False, "expand": False}
+        if hessian == "exact":   # the same matrix, computed by structure (mdo.nlp.hessian)
+            plugin["hess_lag"] = lagrangian_hessian_functions(self, "split")
         self.opti.solver("ipopt", plugin, ipopt)
         if progress is not None:
             progress("building derivative functions (Jacobian, Hessian) and starting IPOPT")

@@ -42,7 +42,7 @@ def register(sub):
                         "non-float keys), skipping its baseline; a point that then fails is re-run cold")
     p.add_argument("--retry-failed", action="store_true", help="re-run finished points that did not converge")
     p.add_argument("--max-iter", type=int, help="IPOPT iteration limit of every point")
-    p.add_argument("--hessian", choices=("exact", "limited-memory"), help="as `mdo run --hessian`")
+    p.add_argument("--hessian", choices=("exact", "full", "limited-memory"), help="as `mdo run --hessian`")
     p.add_argument("--x", help="(plot) grid key on the horizontal axis")
     p.add_argument("--y", help="(plot) column of sweep.csv (default objective)")
     p.add_argument("--carpet", metavar="KEY2", help="(plot) second grid key: a carpet plot")
