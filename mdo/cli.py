@@ -162,6 +162,7 @@ def _run_stages(args, options, folder, ws_data, progress) -> int:
                       "fix the baseline or pass --no-baseline", file=sys.stderr)
             return code
         load_warm_start(problem, sol)
+        problem.start_from_baseline()      # monotone barrier from the converged mission
     what = "analysis, design frozen" if args.analysis else "optimization"
     if staged:
         what = f"stage 2 of 2: {what}, from the baseline"

@@ -61,3 +61,15 @@ def test_split_solve_follows_the_solvers_own_hessian():
 def test_bad_hessian_choice_names_the_field():
     with pytest.raises(InputError, match="hessian"):
         _problem().solve(verbose=False, hessian="approximate")
+
+
+def test_optimization_from_the_baseline_uses_a_monotone_barrier_unless_the_problem_chose():
+    from mdo.nlp.problem import FROM_BASELINE_OPTIONS
+    p = _problem()
+    p.start_from_baseline()
+    assert {k: p.ipopt_options[k] for k in FROM_BASELINE_OPTIONS} == FROM_BASELINE_OPTIONS
+    q = _problem()
+    q.ipopt_options["mu_strategy"] = "monotone"
+    q.ipopt_options["mu_init"] = 0.5
+    q.start_from_baseline()
+    assert q.ipopt_options["mu_init"] == 0.5

@@ -43,6 +43,7 @@ def one_start(module, rng, spread):
         s_an.save(tmp)
         op = module.build(analysis=False)
         op.warm_start(Path(tmp) / "solution.json")
+        op.start_from_baseline()     # as mdo run's stage 2
         s = op.solve(verbose=False)
     wall = time.perf_counter() - t0
     design = {v["name"]: v["value"] for v in s.variables if v["design"]}
