@@ -72,14 +72,19 @@ def test_interrupt_in_the_baseline_stage_says_so(tmp_path):
 @pytest.mark.parametrize("sig,code", [(signal.SIGINT, 130), (signal.SIGTERM, 143)])
 def test_signal_while_building_leaves_nothing(tmp_path, sig, code):
     f = tmp_path / "slow_build.py"
-    f.write_text("import time\n\ndef build():\n    time.sleep(60)\n")
+    started = tmp_path / "building"
+    # build() says when it is running, so the signal lands inside it however slow the start
+    f.write_text(f"import pathlib, time\n\ndef build():\n    pathlib.Path({str(started)!r}).touch()\n"
+                 f"    time.sleep(600)\n")
     out = tmp_path / "new" / "run"
     proc = subprocess.Popen([sys.executable, "-m", "mdo.cli", "run", str(f), "--out", str(out)],
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     t0 = time.time()
-    while not list(tmp_path.glob("new/run.incomplete-*")) and time.time() - t0 < 60:
+    while not started.exists() and time.time() - t0 < 120:
         time.sleep(0.1)
-    time.sleep(0.5)
+    assert started.exists(), "build() never started"
+    assert list(tmp_path.glob("new/run.incomplete-*")), "the run folder is taken before anything is built"
+    time.sleep(0.3)
     proc.send_signal(sig)
     _, err = proc.communicate(timeout=60)
     assert proc.returncode == code, err
