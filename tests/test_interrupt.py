@@ -77,8 +77,11 @@ def test_signal_while_building_leaves_nothing(tmp_path, sig, code):
     f.write_text(f"import pathlib, time\n\ndef build():\n    pathlib.Path({str(started)!r}).touch()\n"
                  f"    time.sleep(600)\n")
     out = tmp_path / "new" / "run"
+    # a shell's background job inherits SIGINT ignored, and Python keeps it so; the user's
+    # terminal run has the default, which this test is about
     proc = subprocess.Popen([sys.executable, "-m", "mdo.cli", "run", str(f), "--out", str(out)],
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     t0 = time.time()
     while not started.exists() and time.time() - t0 < 120:
         time.sleep(0.1)
