@@ -20,7 +20,6 @@ from __future__ import annotations
 import contextlib
 import json
 import os
-import signal
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -30,27 +29,16 @@ import casadi as ca
 import numpy as np
 
 from ..core.errors import InputError
-from ..core.signals import SignalInterrupt, interrupt_signal
+from ..core.signals import interrupt_signal
 from .hessian import lagrangian_hessian_functions
+from .ipopt import (CRASH_ON_EXIT_STATUS, FRAGILE, FROM_BASELINE_OPTIONS, HESSIAN_CHOICES,  # noqa: F401
+                    INTERRUPT_STATUS, WARM_START_OPTIONS, _outcome, _signals_as_interrupts)
 # re-exported: the solved side lives in mdo.nlp.solution
 from .solution import (ACTIVE_SLACK, DESIGN_BOUND_FRACTION, Solution, _readable, _variable_arrays,  # noqa: F401
                        element_label, group_residual, write_atomic)
 
-#: ``Problem.solve(hessian=...)``: exact (split by structure), exact (one colouring), quasi-Newton
-HESSIAN_CHOICES = ("exact", "full", "limited-memory")
-
 __all__ = ["Problem", "Variable", "ConstraintGroup", "Solution", "SolveError", "WarmStartError",
            "WarmStart", "INTERRUPT_STATUS"]
-
-# status of a solve stopped by a signal -> (signal name, conventional exit code 128 + signum)
-INTERRUPT_STATUS = {"Interrupted_By_User": ("SIGINT", 130), "Terminated_By_Signal": ("SIGTERM", 143)}
-
-# IPOPT statuses after which CasADi 3.6-3.8 crashes (SIGSEGV) when the solver is destroyed
-# at interpreter exit; the CLI then leaves with os._exit once its files are flushed
-CRASH_ON_EXIT_STATUS = {"Invalid_Option"}
-FRAGILE = []   # Opti objects whose solve ended so: kept alive until os._exit
-
-
 
 class WarmStartError(InputError):
     """A warm-start file that does not fit the problem (name, variables, sizes, values)."""
@@ -127,69 +115,6 @@ def _shape(shape) -> tuple:
     if len(shape) != 2:
         raise ValueError("variables are vectors or matrices (CasADi is 2-D)")
     return shape
-
-
-# The optimization started from its converged baseline (mdo run's stage 2): a monotone
-# barrier from mu = 1e-2 instead of IPOPT's adaptive mu.  Measured 2026-12-02 on the GA
-# family: the adaptive rule's free mode dropped mu to 1e-9.5 with the iterate still
-# 0.1 infeasible and took steps of |d| 20-30 that left the feasible region for good
-# (GA-8P's layout and the 12-propeller member: "local infeasibility" / diverged), while
-# the monotone barrier converged in 48 and 38 iterations; on GA-2P 42 iterations to
-# 51.402 kWh against 69 to 51.434 kWh.  A problem that sets its own mu_strategy keeps it.
-FROM_BASELINE_OPTIONS = {"mu_strategy": "monotone", "mu_init": 1e-2}
-
-WARM_START_OPTIONS = {
-    "warm_start_init_point": "yes",
-    "warm_start_bound_push": 1e-9,
-    "warm_start_bound_frac": 1e-9,
-    "warm_start_slack_bound_push": 1e-9,
-    "warm_start_slack_bound_frac": 1e-9,
-    "warm_start_mult_bound_push": 1e-9,
-    "mu_init": 1e-9,
-}
-
-
-def _outcome(stats: dict, max_iter: int, signum):
-    """(history, status, success, iterations) from IPOPT's stats and the signal caught."""
-    history = {"iter": [], "objective": [], "inf_pr": [], "inf_du": []}
-    it = stats.get("iterations", {})
-    if it:
-        history["objective"] = [float(v) for v in it.get("obj", [])]
-        history["inf_pr"] = [float(v) for v in it.get("inf_pr", [])]
-        history["inf_du"] = [float(v) for v in it.get("inf_du", [])]
-        history["iter"] = list(range(len(history["objective"])))
-    if signum is None:
-        status = stats.get("return_status", "unknown")
-    else:
-        status = "Terminated_By_Signal" if signum == signal.SIGTERM else "Interrupted_By_User"
-    success = bool(stats.get("success", False)) and signum is None
-    n_iter = int(stats.get("iter_count", 0))
-    if not (0 <= n_iter <= max_iter):
-        # IPOPT aborted (interrupt, exception): its counter is not set; use what was logged
-        n_iter = max(len(history["objective"]) - 1, 0)
-    return history, status, success, n_iter
-
-
-@contextlib.contextmanager
-def _signals_as_interrupts():
-    """SIGINT and SIGTERM raise KeyboardInterrupt while IPOPT runs (CasADi checks for a
-    pending Python exception in its iteration callback and stops with the last iterate);
-    yields a dict whose ``"signal"`` says which one came."""
-    caught: dict = {}
-
-    def handler(signum, frame):
-        caught.setdefault("signal", int(signum))
-        raise SignalInterrupt(signum)
-
-    previous = {}
-    for sig in (signal.SIGINT, signal.SIGTERM):
-        with contextlib.suppress(ValueError, OSError):  # not in the main thread: leave handlers alone
-            previous[sig] = signal.signal(sig, handler)
-    try:
-        yield caught
-    finally:
-        for sig, h in previous.items():
-            signal.signal(sig, h)
 
 
 @dataclass
