@@ -140,6 +140,7 @@ def _run_stages(args, options, folder, ws_data, progress) -> int:
               + ("; multipliers loaded (IPOPT warm_start_init_point)" if ws.multipliers else ""))
     # DESIGN rule 7, continuation: an optimization with design variables first flies the
     # baseline (design frozen) and starts from that converged mission
+    monotone = False
     staged = (not args.analysis and ws_data is None and not args.no_baseline
               and any(v.design and not v.frozen for v in problem.variables.values()))
     if ws_data is None and (staged or args.analysis):
@@ -162,14 +163,37 @@ def _run_stages(args, options, folder, ws_data, progress) -> int:
                       "fix the baseline or pass --no-baseline", file=sys.stderr)
             return code
         load_warm_start(problem, sol)
-        problem.start_from_baseline()      # monotone barrier from the converged mission
+        baseline_sol = sol
+        monotone = problem.start_from_baseline()      # monotone barrier from the converged mission
     what = "analysis, design frozen" if args.analysis else "optimization"
     if staged:
         what = f"stage 2 of 2: {what}, from the baseline"
     code, sol = _solve_stage(problem, folder.stage, args, what, progress)
+    if staged and monotone and code == 1 and sol.status != "Maximum_Iterations_Exceeded":
+        code, sol = _adaptive_retry(problem, baseline_sol, sol, folder, args, what, progress)
     where = folder.commit(sol.success, sol.status)
     _final_report(sol, where, folder, code, what)
     return code
+
+
+def _adaptive_retry(problem, baseline_sol, failed, folder, args, what, progress) -> tuple:
+    """DESIGN rule 7's fallback: the monotone barrier from the baseline ended without an
+    optimum (not an interrupt, not the iteration limit the user set), so its files move to
+    ``monotone/`` in the stage and the optimization starts again from the baseline with
+    IPOPT's adaptive barrier (GA-4P: monotone ends in a local infeasibility, adaptive
+    converges).  The new ``summary.json["barrier"]`` records the failed attempt."""
+    from .nlp.run import load_warm_start
+
+    kept = folder.stage / "monotone"
+    kept.mkdir()
+    for f in list(folder.stage.iterdir()):
+        if f.name not in ("analysis", "monotone", "INCOMPLETE.txt"):
+            f.rename(kept / f.name)
+    print(f"mdo: the monotone barrier ended {failed.status} after {failed.iterations} iterations "
+          f"(kept in monotone/); starting again from the baseline with the adaptive barrier")
+    problem.adaptive_barrier_after(failed, "monotone")
+    load_warm_start(problem, baseline_sol)
+    return _solve_stage(problem, folder.stage, args, f"{what}, adaptive barrier", progress)
 
 
 def _relaxed_start(args, options, analysis_problem, folder, progress):

@@ -54,3 +54,32 @@ def test_an_earlier_baseline_is_not_overwritten_unasked(tmp_path):
     assert "--force" in r.stderr and "analysis" in r.stderr
     assert (out / "analysis" / "summary.json").read_text() == "{}"
     assert not (out / "summary.json").exists()
+
+
+def test_a_failed_monotone_optimization_is_retried_with_the_adaptive_barrier(tmp_path, monkeypatch, capsys):
+    """DESIGN rule 7's fallback: when the monotone barrier from the baseline ends without an
+    optimum, the optimization starts again from the baseline with the adaptive barrier; the
+    failed attempt's files are kept in monotone/ and summary.json says so.  The monotone
+    attempt is made to fail here by a CPU-time limit added to its options."""
+    from mdo import cli
+    from mdo.nlp import ipopt
+
+    monkeypatch.setitem(ipopt.FROM_BASELINE_OPTIONS, "max_cpu_time", 1e-6)
+    out = tmp_path / "run"
+    code = cli.main(["run", str(POLAR), "-o", "design_wing_area=true", "--out", str(out), "--quiet"])
+    assert code == 0, capsys.readouterr().err
+    opt, failed = _summary(out), _summary(out / "monotone")
+    assert failed["status"] == "Maximum_CpuTime_Exceeded" and failed["barrier"]["mu_strategy"] == "monotone"
+    assert opt["status"] == "Solve_Succeeded"
+    assert opt["barrier"]["mu_strategy"] == "adaptive"
+    assert opt["barrier"]["fallback_from"]["status"] == "Maximum_CpuTime_Exceeded"
+    assert opt["barrier"]["fallback_from"]["folder"] == "monotone"
+    assert "after the monotone barrier ended" in (out / "summary.md").read_text()
+    assert (out / "analysis" / "summary.json").exists() and (out / "monotone" / "ipopt.log").exists()
+    # the same optimum as the monotone barrier finds when it is not stopped
+    monkeypatch.delitem(ipopt.FROM_BASELINE_OPTIONS, "max_cpu_time")
+    code = cli.main(["run", str(POLAR), "-o", "design_wing_area=true", "--out", str(tmp_path / "m"), "--quiet"])
+    assert code == 0
+    mono = _summary(tmp_path / "m")
+    assert mono["barrier"] == {"mu_strategy": "monotone", "mu_init": 0.01}
+    assert abs(mono["battery_energy_kWh"] - opt["battery_energy_kWh"]) < 1e-4 * mono["battery_energy_kWh"]

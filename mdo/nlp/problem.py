@@ -214,13 +214,28 @@ class Problem:
             "nlp_scaling_method": "gradient-based",
         }
         self._analysis = False
+        self.barrier_fallback_from: dict | None = None   # the failed attempt a retry follows
 
     # ------------------------------------------------------------------ build
-    def start_from_baseline(self) -> None:
+    def start_from_baseline(self) -> bool:
         """Use the barrier settings of an optimization that starts from its converged
-        baseline (``FROM_BASELINE_OPTIONS``), unless the problem chose its own barrier."""
+        baseline (``FROM_BASELINE_OPTIONS``), unless the problem chose its own barrier.
+        True if they were applied (then ``adaptive_barrier_after`` may retry without them)."""
         if self.ipopt_options.get("mu_strategy", "adaptive") == "adaptive" and "mu_init" not in self.ipopt_options:
             self.ipopt_options.update(FROM_BASELINE_OPTIONS)
+            return True
+        return False
+
+    def adaptive_barrier_after(self, failed: "Solution", folder: str) -> None:
+        """Go back to IPOPT's adaptive barrier after a ``FROM_BASELINE_OPTIONS`` solve that
+        did not converge; the next solution records the failed attempt (its status,
+        iterations, objective and the folder its files were kept in)."""
+        for key in FROM_BASELINE_OPTIONS:
+            self.ipopt_options.pop(key, None)
+        self.ipopt_options["mu_strategy"] = "adaptive"
+        self.barrier_fallback_from = {"mu_strategy": failed.barrier.get("mu_strategy", "?"),
+                                      "status": failed.status, "iterations": failed.iterations,
+                                      "objective": failed.objective, "folder": folder}
 
     def variable(self, name: str, shape=1, *, unit: str = "-", scale=1.0, lower=-np.inf,
                  upper=np.inf, init=0.0, design: bool = False, description: str = "",
@@ -541,6 +556,10 @@ class Problem:
         solution = Solution._from_debug(self, debug, status=status, success=success,
                                         iterations=n_iter, wall_time_s=wall,
                                         stats=stats, history=history)
+        solution.barrier = {"mu_strategy": ipopt.get("mu_strategy", "monotone"),
+                            "mu_init": float(ipopt.get("mu_init", 0.1))}   # IPOPT's defaults
+        if self.barrier_fallback_from:
+            solution.barrier["fallback_from"] = dict(self.barrier_fallback_from)
         if raise_on_failure and not success:
             raise SolveError(f"{self.name}: IPOPT ended with {status}\n" + solution.violation_report(), solution)
         return solution

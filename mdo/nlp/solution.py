@@ -53,6 +53,7 @@ class Solution:
     objective_scale: float = 1.0
     active: list = field(default_factory=list)        # what limits the design (active_limits)
     pinned: list = field(default_factory=list)        # variables at a bound (pinned_variables)
+    barrier: dict = field(default_factory=dict)       # IPOPT's barrier strategy; "fallback_from" if retried
     _values: dict = field(default_factory=dict, repr=False)
     _problem: object = field(default=None, repr=False)
     _debug: object = field(default=None, repr=False)
@@ -173,6 +174,8 @@ class Solution:
         d["worst_violations"] = [v for v in self.violations[:5]]
         d["pinned_at_bounds"] = self.pinned
         d["timing"] = self.timing
+        if self.barrier:
+            d["barrier"] = self.barrier
         return d
 
     # -------------------------------------------------------------- files
@@ -201,7 +204,14 @@ class Solution:
                  f"- status: **{self.status}** ({'converged' if self.success else 'NOT converged'})",
                  f"- {self.objective_name}: {self.objective:.6g} {self.objective_unit}",
                  f"- IPOPT iterations: {self.iterations}; wall time {self.wall_time_s:.2f} s",
-                 f"- NLP: " + ", ".join(f"{k} {v}" for k, v in self.nlp_size.items()), ""]
+                 f"- NLP: " + ", ".join(f"{k} {v}" for k, v in self.nlp_size.items())]
+        if self.barrier:
+            b = self.barrier
+            lines.append(f"- barrier: {b['mu_strategy']}, mu_init {b['mu_init']:g}" + (
+                f" (after the {b['fallback_from']['mu_strategy']} barrier ended "
+                f"{b['fallback_from']['status']} in {b['fallback_from']['iterations']} iterations; "
+                f"its files in {b['fallback_from']['folder']}/)" if "fallback_from" in b else ""))
+        lines.append("")
         sv = self.summary_values()
         if sv:
             lines += ["## Results", "", "| quantity | value | unit |", "|---|---|---|"]
