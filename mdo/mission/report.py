@@ -53,6 +53,7 @@ def write_mission_report(mission, solution, out_dir):
     # per-segment summary
     e_seg = np.atleast_1d(np.asarray(solution.value(mission.segment_energy_J), float)).ravel()
     t = vals[:, names.index("time_s")]
+    v = vals[:, names.index("speed_mps")]      # the solved speeds (free where the trajectory is)
     with open(out / "mission_segments.csv", "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(["segment", "kind", "nodes", "start_s", "duration_s", "altitude_start_m", "altitude_end_m",
@@ -60,8 +61,8 @@ def write_mission_report(mission, solution, out_dir):
         for i, g in enumerate(mission._segs):
             a, b = g.node0, g.node0 + g.n - 1
             w.writerow([g.segment.name, g.segment.kind, g.n, f"{t[a]:.6g}", f"{t[b] - t[a]:.6g}",
-                        f"{g.kin.altitude_m[0]:.6g}", f"{g.kin.altitude_m[-1]:.6g}", f"{g.kin.speed_mps[0]:.6g}",
-                        f"{g.kin.speed_mps[-1]:.6g}", f"{e_seg[i] / KWH:.12g}"])
+                        f"{g.kin.altitude_m[0]:.6g}", f"{g.kin.altitude_m[-1]:.6g}", f"{v[a]:.6g}",
+                        f"{v[b]:.6g}", f"{e_seg[i] / KWH:.12g}"])
     from ..plots.figures import plot_mission   # the figure is drawn from the file, as by ``mdo plot``
     plot_mission(path, out / "mission.png")
     return path

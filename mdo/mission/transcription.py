@@ -44,6 +44,7 @@ from ..core.errors import InputError
 from ..core.units import KWH, MINUTE, NMI
 from ..vehicle.base import G0, NodeConditions, Output
 from .segments import Kinematics, Segment
+from .trajectory import Envelope, FreeSpeedRows, trajectory_modes
 
 __all__ = ["Mission", "DEFAULT_NODES", "STANDARD_PARAMETERS"]
 
@@ -89,11 +90,16 @@ class Mission:
     prefix : put in front of every variable, constraint and output name (to
         hold two missions in one problem)
     body_angle_bounds_rad : bounds of the body-angle unknowns
+    trajectory : ``"prescribed"`` (default: every segment flies its closed-form
+        kinematics), ``"free"`` (every forward-flight segment's speed and duration are
+        controls) or ``{segment name: "prescribed" | "speed" | "free"}``
+        (:mod:`mdo.mission.trajectory`)
+    envelope : the :class:`~mdo.mission.trajectory.Envelope` freed segments respect
     """
 
     def __init__(self, vehicle, segments, *, nodes: int = DEFAULT_NODES, state_form: str = "differentiation",
                  prefix: str = "", body_angle_bounds_rad=(-45.0 * math.pi / 180, 60.0 * math.pi / 180),
-                 name: str = "mission"):
+                 name: str = "mission", trajectory="prescribed", envelope: Envelope | None = None):
         if not segments:
             raise InputError("segments", "a mission needs at least one segment")
         if state_form not in ("differentiation", "integration"):
@@ -123,6 +129,10 @@ class Mission:
                                      f"{sorted(self.parameters)}")
         self._segs: list[_Seg] = []
         self._resolve_kinematics()
+        self.modes = trajectory_modes(self._segs, trajectory)
+        self.envelope = envelope if envelope is not None else Envelope()
+        if not isinstance(self.envelope, Envelope):
+            raise InputError("envelope", f"an mdo.mission.trajectory.Envelope, got {type(envelope).__name__}")
         self.built = False
 
     # ------------------------------------------------------------------ kinematics
@@ -204,12 +214,21 @@ class Mission:
                 T = problem.variable(f"{P}{g.segment.name}.duration", unit="s", scale=max(guess, 1.0), lower=lo,
                                      upper=hi, init=guess, description=f"duration of segment {g.segment.name}")
                 g.duration = T
+            elif self.modes[g.segment.name] == "free":   # free trajectory: the duration is a control
+                T0 = g.kin.duration_s
+                lo, hi = self.envelope.duration_range
+                g.duration = problem.variable(f"{P}{g.segment.name}.duration", unit="s", scale=max(T0, 1.0),
+                                              lower=lo * T0, upper=hi * T0, init=T0,
+                                              description=f"duration of segment {g.segment.name} (free trajectory)")
             durations.append(g.duration)
             dur_guess.append(g.duration_guess)
         symbolic_time = any(isinstance(T, ca.MX) for T in durations)
 
         num = self._numeric_rows(dur_guess)
         params = self.parameter_rows()
+        free = FreeSpeedRows(self, problem, self.modes, self.envelope, durations)
+        free.prescribed_range_m = float(self._distance_row(dur_guess)[0, -1])
+        kin = free.rows(num)
 
         # ---- body angle: free nodes are unknowns, prescribed nodes follow their schedule
         free_mask = np.ones(K, dtype=bool)
@@ -303,10 +322,9 @@ class Mission:
         else:
             time_row = _row(num["time_s"])
         cond = NodeConditions(
-            time_s=time_row, altitude_m=_row(num["altitude_m"]), speed_mps=_row(num["speed_mps"]),
-            flight_path_angle_rad=_row(num["flight_path_angle_rad"]),
-            acceleration_mps2=_row(num["acceleration_mps2"]),
-            flight_path_angle_rate_radps=_row(num["flight_path_angle_rate_radps"]),
+            time_s=time_row, altitude_m=_row(num["altitude_m"]), speed_mps=kin["speed_mps"],
+            flight_path_angle_rad=kin["flight_path_angle_rad"], acceleration_mps2=kin["acceleration_mps2"],
+            flight_path_angle_rate_radps=kin["flight_path_angle_rate_radps"],
             body_angle_rad=theta, pitch_rate_radps=pitch_rate,
             parameters={k: _row(v) for k, v in params.items()}, states=state_rows,
             segment=self.segment_of_node, labels=labels)
@@ -322,6 +340,10 @@ class Mission:
         r_n = ev.force_normal_N - m * (G0 * ca.cos(gam) + V * cond.flight_path_angle_rate_radps)
         problem.constrain(f"{P}force_along_path", r_t, scale=f_scale, unit="N", labels=labels)
         problem.constrain(f"{P}force_normal_to_path", r_n, scale=f_scale, unit="N", labels=labels)
+        self.duration_s = sum(durations[1:], durations[0]) if len(durations) > 1 else durations[0]
+        dist = self._distance_row(durations, V, gam)
+        free.constrain(cond, m, dist, self.duration_s, veh)     # joins, trip distance, envelope
+        self.free = free
 
         # ---- vehicle residuals
         for grp in ev.residuals:
@@ -360,8 +382,6 @@ class Mission:
                               labels=list(grp.row_labels or ["end of mission"]))
         self.segment_energy_J = ca.vertcat(*[veh.energy_used_J(a, b) for a, b in
                                              zip(self.segment_start_states, self.segment_end_states)])
-        self.duration_s = sum(durations[1:], durations[0]) if len(durations) > 1 else durations[0]
-        dist = self._distance_row(durations)
         self.rows = {
             "time_s": (time_row, "s"), "altitude_m": (cond.altitude_m, "m"), "speed_mps": (V, "m/s"),
             "flight_path_angle_rad": (gam, "rad"), "body_angle_rad": (theta, "rad"),
@@ -433,17 +453,32 @@ class Mission:
             Tcol = ca.DM(Tsel @ np.asarray(durations, float))
         return ca.mtimes(A, x.T) - Tcol * ca.mtimes(B, f.T)
 
-    def _distance_row(self, durations):
-        """Horizontal distance flown at each node: T (I V cos gamma) per segment, chained."""
+    def _distance_row(self, durations, V=None, gam=None):
+        """Horizontal distance flown at each node: T (I V cos gamma) per segment, chained;
+        the prescribed kinematics unless the rows ``V``, ``gam`` are given (free trajectory)."""
         pieces, d0 = [], 0.0
         for g, T in zip(self._segs, durations):
-            vx = g.kin.speed_mps * np.cos(g.kin.flight_path_angle_rad)
+            if V is None:
+                vx = _row(g.kin.speed_mps * np.cos(g.kin.flight_path_angle_rad))
+            else:
+                vx = V[:, g.node0:g.node0 + g.n] * ca.cos(gam[:, g.node0:g.node0 + g.n])
             if g.kin.vertical:
-                vx = np.zeros(g.n)
-            local = Collocation(g.n).I @ vx       # on [0, 1]
-            pieces.append(d0 + T * _row(local))
-            d0 = d0 + T * float(local[-1])
+                vx = ca.DM.zeros(1, g.n)
+            local = ca.mtimes(vx, ca.DM(self._quadrature(g.n)).T)       # on [0, 1]
+            pieces.append(d0 + T * local)
+            d0 = d0 + T * local[0, g.n - 1]
         return ca.horzcat(*pieces)
+
+    def _quadrature(self, n):
+        """The running integral on [0, 1] consistent with the state collocation: Clenshaw-
+        Curtis (``I``) in the integration form; in the differentiation form the solution of
+        (D x)_j = f_j, j = 1 .. n-1, x_0 = 0, which does not see f_0 (as the states do not)."""
+        c = Collocation(n)
+        if self.state_form == "integration":
+            return c.I
+        Q = np.zeros((n, n))
+        Q[1:, 1:] = np.linalg.inv(c.D[1:, 1:])
+        return Q
 
     def _initial_states_guess(self, problem, state_vars, ev, dur_guess):
         """Integrate the state rates at the initial guess (a few Picard sweeps)."""

@@ -201,6 +201,11 @@ class PolarVehicle:
     def energy_used_J(self, initial: dict, final: dict):
         return final["energy_drawn"] - initial["energy_drawn"]
 
+    def stall_reference(self):
+        """(reference area m^2, CL_max) for the free trajectory's stall-speed margin
+        (:mod:`mdo.mission.trajectory`); None without a ``CL_max``."""
+        return None if self.CL_max is None else (self._S, self.CL_max)
+
     # ------------------------------------------------------------------ physics
     def _v_hover(self, rho):
         return math.sqrt(self.weight_N / (2.0 * rho * self.disk_area_m2))

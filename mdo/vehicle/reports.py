@@ -35,7 +35,7 @@ def cruise_node(mission) -> int:
     """Index of the middle node of the cruise segment (the first segment named CR)."""
     idx = [k for k, lab in enumerate(mission.labels) if lab.split(" node ")[0] == "CR"]
     if not idx:
-        V = np.asarray(mission.cond.speed_mps, float).ravel()
+        V = np.concatenate([g.kin.speed_mps for g in mission._segs])   # the profile's speeds
         return int(np.argmax(V))
     return idx[len(idx) // 2]
 
@@ -148,7 +148,7 @@ def _geometry_numbers(vehicle, mission, solution, k: int) -> dict:
     f = vehicle.config.fuselage
     # drawing assumption: the fuselage top at the highest wing root (high wings, tandem tilt-wings)
     top_z = max(w.root_z_m for w in vehicle.lifting_wings)
-    V = float(np.asarray(mission.cond.speed_mps)[0, k])
+    V = float(_val(solution, mission.cond.speed_mps).ravel()[k])
     rotors, pitch0 = [], None
     for gm in vehicle.groups:
         R = float(_val(solution, gm.design["R"]))
@@ -202,7 +202,7 @@ def energy_breakdown(vehicle, mission, solution) -> str:
     rows = {k: np.asarray(solution.value(ev[k].expr), float).ravel()
             for k in ("battery_power_W", "shaft_power_W", "thrust_power_W", "drag_N", "induced_drag_N",
                       "parasite_drag_N")}
-    V = np.asarray(mission.cond.speed_mps, float).ravel()
+    V = _val(solution, mission.cond.speed_mps).ravel()
     h = np.asarray(mission.cond.altitude_m, float).ravel()
     m = float(_val(solution, vehicle.togw))
     g0 = 9.80665
