@@ -31,6 +31,12 @@ AIRCRAFT_OPTIONS = {
     "wake_samples": (int, 1, 15),
 }
 
+#: the free-trajectory options of a problem that offers them (problems/ga2p.py)
+TRAJECTORY_OPTIONS = {
+    "trajectory": (str, "prescribed", "free"),
+    "max_block_time_min": (float, 1.0, 1000.0),
+}
+
 
 def minimize_battery_energy(problem, vehicle, mission, *, max_iter: int = 500):
     """Objective E_EOF of Eq. 7 (kWh, scaled by 10 kWh) and every report: mission.csv and

@@ -21,20 +21,25 @@ never exceeds the swirl power the slipstreams carry; "unbounded"), ``limits`` (t
 ``tip_mach_limit`` ("nodes", "design_point" or "off"), ``allow_regeneration`` (false),
 ``max_span_m`` (none: a hangar/gate limit), ``approach_drag_area_m2`` (0.40 m^2, ``GA_APPROACH_DRAG_AREA_M2``:
 gear and flap drag the pilot may add on BL and FA, a control per node; without it and
-without battery charging the clean airframe cannot slow down on the base leg), ``wake_samples`` (5).
+without battery charging the clean airframe cannot slow down on the base leg), ``wake_samples`` (5),
+``trajectory`` ("prescribed": Table 5's speeds and rates; "free": every segment's speeds and
+duration are controls within the envelope of ``mdo.mission.trajectory``, the altitudes and the
+trip's ground distance kept), ``max_block_time_min`` (none; with a free trajectory, the mission
+duration limit).
 """
 from dataclasses import replace
 
 from mdo.core.units import FT, MPH, NMI
 from mdo.mission.profiles import ga_mission
+from mdo.mission.trajectory import Envelope
 from mdo.nlp import Problem
-from mdo.studies import AIRCRAFT_OPTIONS, minimize_battery_energy
+from mdo.studies import AIRCRAFT_OPTIONS, TRAJECTORY_OPTIONS, minimize_battery_energy
 from mdo.vehicle.aircraft import Aircraft
 from mdo.vehicle.catalog import ga2p
 
 
 # allowed values of the -o options (mdo.nlp.options; `mdo run problems/ga2p.py --options`)
-OPTIONS = {**AIRCRAFT_OPTIONS,
+OPTIONS = {**AIRCRAFT_OPTIONS, **TRAJECTORY_OPTIONS,
     "max_span_m": (float, 5.0, 30.0),
     "approach_drag_area_m2": (float, 0.0, 2.0),
 }
@@ -46,7 +51,8 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
           n_stations: int = 16, wing_strips: int = 24, mass_model: str = "buildup", rotation: str = "inboard_up",
           coupling: str = "swirl", swirl_recovery: str = "bounded", limits: bool = True,
           tip_mach_limit: str = "nodes", allow_regeneration: bool = False, max_span_m: float | None = None,
-          approach_drag_area_m2: float = 0.40, wake_samples: int = 5):
+          approach_drag_area_m2: float = 0.40, wake_samples: int = 5, trajectory: str = "prescribed",
+          max_block_time_min: float | None = None):
     p = Problem("ga2p", "GA-2P whole-mission optimization (Clarke et al. Eq. 7)")
     cfg = ga2p(rotation)
     cfg = replace(cfg, battery=replace(cfg.battery, cells_series=cells_series, cells_parallel=cells_parallel),
@@ -58,5 +64,7 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
     mission = ga_mission(vehicle, nodes=nodes, cruise_distance_m=cruise_distance_nmi * NMI,
                          reserve_cruise_distance_m=reserve_cruise_distance_nmi * NMI,
                          cruise_altitude_m=cruise_altitude_ft * FT, cruise_speed_mps=cruise_speed_mph * MPH,
-                         approach_drag_area_m2=approach_drag_area_m2).build(p)
+                         approach_drag_area_m2=approach_drag_area_m2, trajectory=trajectory,
+                         envelope=Envelope(max_block_time_s=None if max_block_time_min is None
+                                           else max_block_time_min * 60.0)).build(p)
     return minimize_battery_energy(p, vehicle, mission)

@@ -193,10 +193,13 @@ def ga_segments(*, cruise_distance_m: float = 50 * NMI, reserve_cruise_distance_
 
 
 def ga_mission(vehicle, *, nodes: int = DEFAULT_NODES, state_form: str = "differentiation", prefix: str = "",
-               **options) -> Mission:
-    """A :class:`Mission` of ``vehicle`` over the GA profile (options as :func:`ga_segments`)."""
-    return Mission(vehicle, ga_segments(**options), nodes=nodes, state_form=state_form, prefix=prefix,
-                   name="GA profile (Table 5)")
+               trajectory="prescribed", envelope=None, **options) -> Mission:
+    """A :class:`Mission` of ``vehicle`` over the GA profile (options as :func:`ga_segments`;
+    ``trajectory`` and ``envelope`` as :class:`Mission`)."""
+    segs = ga_segments(**options)
+    return Mission(vehicle, segs, nodes=nodes, state_form=state_form, prefix=prefix,
+                   name="GA profile (Table 5)", trajectory=trajectory, envelope=envelope,
+                   legs=_trip_and_reserve(segs, "RCL"))
 
 
 def evtol_segments(*, cruise_distance_m: float = 50 * NMI, reserve_cruise_distance_m: float = 5 * NMI,
@@ -268,7 +271,21 @@ def evtol_segments(*, cruise_distance_m: float = 50 * NMI, reserve_cruise_distan
 
 
 def evtol_mission(vehicle, *, nodes: int = DEFAULT_NODES, state_form: str = "differentiation", prefix: str = "",
-                  body_angle_bounds_rad=(-60 * DEG, 85 * DEG), **options) -> Mission:
-    """A :class:`Mission` of ``vehicle`` over the eVTOL profile (options as :func:`evtol_segments`)."""
-    return Mission(vehicle, evtol_segments(**options), nodes=nodes, state_form=state_form, prefix=prefix,
-                   body_angle_bounds_rad=body_angle_bounds_rad, name="eVTOL profile (Table 5)")
+                  body_angle_bounds_rad=(-60 * DEG, 85 * DEG), trajectory="prescribed", envelope=None,
+                  **options) -> Mission:
+    """A :class:`Mission` of ``vehicle`` over the eVTOL profile (options as :func:`evtol_segments`;
+    ``trajectory`` and ``envelope`` as :class:`Mission`)."""
+    segs = evtol_segments(**options)
+    return Mission(vehicle, segs, nodes=nodes, state_form=state_form, prefix=prefix,
+                   body_angle_bounds_rad=body_angle_bounds_rad, name="eVTOL profile (Table 5)",
+                   trajectory=trajectory, envelope=envelope, legs=_trip_and_reserve(segs, "RCL"))
+
+
+def _trip_and_reserve(segs, reserve_start):
+    """The trip (to the reserve climb) and the reserve as the two legs whose ground
+    distances a free trajectory keeps."""
+    names = [s.name for s in segs]
+    if reserve_start not in names:
+        return None
+    i = names.index(reserve_start)
+    return [names[:i], names[i:]]

@@ -26,12 +26,13 @@ follow from V(s), T and the prescribed h(s) (D the CGL differentiation matrix on
 
 Speed is continuous at every forward join by construction and the mission starts and
 ends at the profile's speeds (a free start speed would be kinetic energy from
-nowhere); the mission's **total ground distance** is held at the
-profile's ("ground distance"): a free trajectory flies the same trip, its own way.
-The distance is integrated by the same collocation as the battery's state (in the
-differentiation form from nodes 1 .. n-1 of each segment, ``Mission._distance_row``):
-with Clenshaw-Curtis over all nodes, node 0's speed - whose power no state sees -
-would buy distance for nothing.
+nowhere); the **ground distance of each leg** (``Mission(legs=...)``: the whole mission
+by default; the GA and eVTOL profiles hold the trip and the reserve apart) is held at
+the profile's ("ground distance"): a free trajectory flies the same trip, its own way.
+Without a block-time limit nothing charges for time, so the energy optimum flies
+slowly and descends early (measured on GA-2P; ``max_block_time_s``).
+The distance is Clenshaw-Curtis of V cos(gamma) over each segment's nodes, exact for
+the linear speed of a level segment.
 
 The envelope (``Envelope``), on every node of a freed segment, each a named group:
 
@@ -51,6 +52,9 @@ The envelope (``Envelope``), on every node of a freed segment, each a named grou
   the designer may tighten).
 * "normal load factor": n = cos(gamma) + V gamma'/g within 1 +- 0.3 (passenger ride
   comfort; a choice).
+* "longitudinal acceleration": |dV/dt| <= 0.3 g (the same comfort figure; without it
+  a short free transition brakes or accelerates without limit wherever the vehicle
+  model lets it, e.g. a polar without CL_max at extreme angles of attack).
 * "block time": the mission duration <= ``max_block_time_s`` when given.
 """
 from __future__ import annotations
@@ -81,8 +85,9 @@ class Envelope:
     max_climb_rate_mps: float = 1500 * FT / MINUTE
     max_descent_rate_mps: float = 1500 * FT / MINUTE
     load_factor_increment: float = 0.3
+    max_acceleration_mps2: float = 0.3 * 9.80665
     max_block_time_s: float | None = None
-    duration_range: tuple = (0.3, 3.0)     # a free duration within these factors of the prescribed one
+    duration_range: tuple = (0.01, 10.0)   # a free duration within these factors of the prescribed one
 
     def __post_init__(self):
         def rng(name, v, lo, hi):
@@ -96,6 +101,7 @@ class Envelope:
         rng("max_climb_rate_mps", self.max_climb_rate_mps, 0.1, 100.0)
         rng("max_descent_rate_mps", self.max_descent_rate_mps, 0.1, 100.0)
         rng("load_factor_increment", self.load_factor_increment, 0.01, 3.0)
+        rng("max_acceleration_mps2", self.max_acceleration_mps2, 0.01, 30.0)
         rng("max_block_time_s", self.max_block_time_s, 1.0, 1e6)
         lo, hi = self.duration_range
         if not 0.01 <= lo < 1.0 < hi <= 100.0:
@@ -197,8 +203,12 @@ class FreeSpeedRows:
         if not self.any_free:
             return
         P, m = self.m.prefix, self.m
-        self.p.constrain(f"{P}ground distance", distance_row[0, m.K - 1] - self.prescribed_range_m, scale=1e4,
-                         unit="m", labels=["end of mission"])
+        r, lab = [], []
+        for first, last in m.leg_nodes():
+            r.append(distance_row[0, last] - distance_row[0, first])
+            lab.append(f"{m.labels[first].split(' node ')[0]}..{m.labels[last].split(' node ')[0]}")
+        self.p.constrain(f"{P}ground distance", ca.vertcat(*r) - ca.DM(self.prescribed_leg_m), scale=1e4,
+                         unit="m", labels=lab)
         self._envelope(cond, mass_kg, vehicle, duration_s)
 
     def _free_columns(self, climbing=False):
@@ -238,6 +248,11 @@ class FreeSpeedRows:
                     unit="g", labels=lab)
         p.constrain(f"{P}normal load factor (low)", n_z, kind=">=", rhs=1 - env.load_factor_increment, scale=0.1,
                     unit="g", labels=lab)
+        acc = cond.acceleration_mps2[:, cols]
+        p.constrain(f"{P}longitudinal acceleration", acc, kind="<=", rhs=env.max_acceleration_mps2, scale=1.0,
+                    unit="m/s^2", labels=lab)
+        p.constrain(f"{P}longitudinal deceleration", acc, kind=">=", rhs=-env.max_acceleration_mps2, scale=1.0,
+                    unit="m/s^2", labels=lab)
         if env.max_block_time_s is not None:
             p.constrain(f"{P}block time", duration_s, kind="<=", rhs=env.max_block_time_s, scale=60.0, unit="s",
                         labels=["mission"])

@@ -95,11 +95,14 @@ class Mission:
         controls) or ``{segment name: "prescribed" | "speed" | "free"}``
         (:mod:`mdo.mission.trajectory`)
     envelope : the :class:`~mdo.mission.trajectory.Envelope` freed segments respect
+    legs : lists of consecutive segment names whose ground distance a free trajectory
+        keeps, each on its own (default: the whole mission, one leg)
     """
 
     def __init__(self, vehicle, segments, *, nodes: int = DEFAULT_NODES, state_form: str = "differentiation",
                  prefix: str = "", body_angle_bounds_rad=(-45.0 * math.pi / 180, 60.0 * math.pi / 180),
-                 name: str = "mission", trajectory="prescribed", envelope: Envelope | None = None):
+                 name: str = "mission", trajectory="prescribed", envelope: Envelope | None = None,
+                 legs=None):
         if not segments:
             raise InputError("segments", "a mission needs at least one segment")
         if state_form not in ("differentiation", "integration"):
@@ -130,6 +133,7 @@ class Mission:
         self._segs: list[_Seg] = []
         self._resolve_kinematics()
         self.modes = trajectory_modes(self._segs, trajectory)
+        self.legs = self._check_legs(legs)
         self.envelope = envelope if envelope is not None else Envelope()
         if not isinstance(self.envelope, Envelope):
             raise InputError("envelope", f"an mdo.mission.trajectory.Envelope, got {type(envelope).__name__}")
@@ -164,6 +168,27 @@ class Mission:
         self.labels = [f"{g.segment.name} node {j}" for g in self._segs for j in range(g.n)]
         self.segment_of_node = [g.segment.name for g in self._segs for _ in range(g.n)]
         self.state_index = np.concatenate([g.state0 + np.arange(g.n) for g in self._segs])
+
+    def _check_legs(self, legs):
+        names = [g.segment.name for g in self._segs]
+        if legs is None:
+            return [names]
+        out, used = [], set()
+        for leg in legs:
+            leg = list(leg)
+            if not leg or any(n not in names for n in leg) or used & set(leg):
+                raise InputError("legs", f"lists of segment names, each used once; segments: {', '.join(names)}")
+            i = names.index(leg[0])
+            if names[i:i + len(leg)] != leg:
+                raise InputError("legs", f"a leg is consecutive segments in flight order, got {leg}")
+            used |= set(leg)
+            out.append(leg)
+        return out
+
+    def leg_nodes(self):
+        """(first node, last node) of each leg, mission node indices."""
+        by = {g.segment.name: g for g in self._segs}
+        return [(by[leg[0]].node0, by[leg[-1]].node0 + by[leg[-1]].n - 1) for leg in self.legs]
 
     def _numeric_rows(self, durations):
         """Kinematic rows (numpy) with the given segment durations."""
@@ -227,7 +252,8 @@ class Mission:
         num = self._numeric_rows(dur_guess)
         params = self.parameter_rows()
         free = FreeSpeedRows(self, problem, self.modes, self.envelope, durations)
-        free.prescribed_range_m = float(self._distance_row(dur_guess)[0, -1])
+        d0 = np.asarray(self._distance_row(dur_guess), float).ravel()
+        free.prescribed_leg_m = [d0[b] - d0[a] for a, b in self.leg_nodes()]
         kin = free.rows(num)
 
         # ---- body angle: free nodes are unknowns, prescribed nodes follow their schedule
@@ -464,21 +490,10 @@ class Mission:
                 vx = V[:, g.node0:g.node0 + g.n] * ca.cos(gam[:, g.node0:g.node0 + g.n])
             if g.kin.vertical:
                 vx = ca.DM.zeros(1, g.n)
-            local = ca.mtimes(vx, ca.DM(self._quadrature(g.n)).T)       # on [0, 1]
+            local = ca.mtimes(vx, ca.DM(Collocation(g.n).I).T)       # on [0, 1]
             pieces.append(d0 + T * local)
             d0 = d0 + T * local[0, g.n - 1]
         return ca.horzcat(*pieces)
-
-    def _quadrature(self, n):
-        """The running integral on [0, 1] consistent with the state collocation: Clenshaw-
-        Curtis (``I``) in the integration form; in the differentiation form the solution of
-        (D x)_j = f_j, j = 1 .. n-1, x_0 = 0, which does not see f_0 (as the states do not)."""
-        c = Collocation(n)
-        if self.state_form == "integration":
-            return c.I
-        Q = np.zeros((n, n))
-        Q[1:, 1:] = np.linalg.inv(c.D[1:, 1:])
-        return Q
 
     def _initial_states_guess(self, problem, state_vars, ev, dur_guess):
         """Integrate the state rates at the initial guess (a few Picard sweeps)."""
