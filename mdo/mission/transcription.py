@@ -413,6 +413,9 @@ class Mission:
             "flight_path_angle_rad": (gam, "rad"), "body_angle_rad": (theta, "rad"),
             "distance_m": (dist, "m"),
         }
+        if free.any_free:   # the prescribed profile beside the flown one (mission.csv, mission.png)
+            self.rows["profile_time_s"] = (_row(num["time_s"]), "s")
+            self.rows["profile_speed_mps"] = (_row(num["speed_mps"]), "m/s")
         for k, row in params.items():
             if np.any(row != 0):
                 self.rows[k] = (_row(row), "rad" if k.endswith("_rad") else "-")

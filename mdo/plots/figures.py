@@ -129,6 +129,12 @@ def plot_mission(mission_csv, out_png, title=None, units="si"):
     ax[0, 1].plot(t, us.conv("speed", d["speed_mps"]), ".-", ms=3, label="true airspeed (TAS)")
     ax[0, 1].plot(t, us.conv("speed", equivalent_airspeed(d["speed_mps"], d["altitude_m"])), "--", lw=1,
                   label="equivalent airspeed (EAS, ISA)")
+    if "profile_time_s" in d:   # a free trajectory: the prescribed profile it departs from
+        tp = d["profile_time_s"] / 60.0
+        ax[0, 0].plot(tp, us.conv("altitude", d["altitude_m"]), ":", color="0.4", lw=1.2, label="prescribed profile")
+        ax[0, 1].plot(tp, us.conv("speed", d["profile_speed_mps"]), ":", color="0.4", lw=1.2,
+                      label="prescribed profile (TAS)")
+        ax[0, 0].legend(fontsize=8)
     ax[0, 1].set_ylabel(us.label("airspeed", "speed"))
     ax[0, 1].legend(fontsize=8)
     for key, lab in (("battery_power_W", "battery (chemical)"), ("shaft_power_W", "shaft, all motors")):
