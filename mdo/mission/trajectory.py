@@ -107,6 +107,13 @@ class Envelope:
         if not 0.01 <= lo < 1.0 < hi <= 100.0:
             raise InputError("envelope.duration_range", f"need 0.01 <= lower < 1 < upper <= 100, got {self.duration_range!r}")
 
+    def shortest_duration_s(self, altitude_m, D) -> float:
+        """The least duration at which the segment's altitude profile h(s) stays within the
+        climb and descent rates: max over nodes of h'(s)/rate - a bound on a free duration,
+        so that no trial point of IPOPT has |hdot| > V (asin(hdot/V) undefined)."""
+        dh_ds = np.asarray(D, float) @ np.asarray(altitude_m, float)
+        return float(max(np.max(dh_ds) / self.max_climb_rate_mps, np.max(-dh_ds) / self.max_descent_rate_mps, 0.0))
+
 
 def trajectory_modes(segs, trajectory) -> dict:
     """Segment name -> mode from the ``trajectory`` choice: ``"prescribed"``, ``"free"``
@@ -175,7 +182,8 @@ class FreeSpeedRows:
                 Vf = V0                                   # constant-speed kind
             elif nxt is not None and self.modes[nxt.segment.name] != "prescribed" and not nxt.kin.vertical:
                 Vp = float(kin.speed_mps[-1])
-                Vf = self.p.variable(f"{P}{name}.speed_end", unit="m/s", scale=Vp, lower=0.3 * Vp,
+                v_lo = max(0.3 * Vp, 1.05 * max(self.env.max_climb_rate_mps, self.env.max_descent_rate_mps))
+                Vf = self.p.variable(f"{P}{name}.speed_end", unit="m/s", scale=Vp, lower=v_lo,
                                      upper=self.v_max, init=Vp,
                                      description=f"airspeed at the end of segment {name} (free trajectory)")
                 self.speed_vars[name] = Vf

@@ -242,8 +242,10 @@ class Mission:
             elif self.modes[g.segment.name] == "free":   # free trajectory: the duration is a control
                 T0 = g.kin.duration_s
                 lo, hi = self.envelope.duration_range
+                t_rate = self.envelope.shortest_duration_s(g.kin.altitude_m, Collocation(g.n).D)
                 g.duration = problem.variable(f"{P}{g.segment.name}.duration", unit="s", scale=max(T0, 1.0),
-                                              lower=lo * T0, upper=hi * T0, init=T0,
+                                              lower=max(lo * T0, t_rate), upper=max(hi * T0, 1.01 * t_rate),
+                                              init=max(T0, t_rate),
                                               description=f"duration of segment {g.segment.name} (free trajectory)")
             durations.append(g.duration)
             dur_guess.append(g.duration_guess)
