@@ -225,13 +225,46 @@ class Mission:
         """Write the mission into ``problem``; returns ``self`` (expressions in ``self.rows``)."""
         if self.built:
             raise RuntimeError("Mission.build: this mission is already built; make a new Mission per problem")
-        P = self.prefix
-        veh = self.vehicle
-        veh.setup(problem)
-        K = self.K
-        labels = self.labels
+        self.problem = problem
+        self.vehicle.setup(problem)
+        durations, dur_guess = self._add_durations(problem)
+        num = self._numeric_rows(dur_guess)
+        params = self.parameter_rows()
+        free = FreeSpeedRows(self, problem, self.modes, self.envelope, durations)
+        d0 = np.asarray(self._distance_row(dur_guess), float).ravel()
+        free.prescribed_leg_m = [d0[b] - d0[a] for a, b in self.leg_nodes()]
+        kin = free.rows(num)
+        theta, pitch_rate, guess = self._add_body_angle(problem, num, params)
+        unknowns = self._add_unknowns(problem, guess, params)
+        state_vars, state_rows = self._add_states(problem)
+        time_row = self._time_row(durations, num)
+        cond = NodeConditions(
+            time_s=time_row, altitude_m=_row(num["altitude_m"]), speed_mps=kin["speed_mps"],
+            flight_path_angle_rad=kin["flight_path_angle_rad"], acceleration_mps2=kin["acceleration_mps2"],
+            flight_path_angle_rate_radps=kin["flight_path_angle_rate_radps"],
+            body_angle_rad=theta, pitch_rate_radps=pitch_rate,
+            parameters={k: _row(v) for k, v in params.items()}, states=state_rows,
+            segment=self.segment_of_node, labels=self.labels)
+        ev = self.vehicle.evaluate(cond, unknowns)     # the one vehicle evaluation, all K nodes
+        self.cond, self.unknowns, self.theta, self.evaluation = cond, unknowns, theta, ev
+        self.states, self.state_rows = state_vars, state_rows
+        self._add_equations_of_motion(problem, cond, ev)
+        self.duration_s = sum(durations[1:], durations[0]) if len(durations) > 1 else durations[0]
+        dist = self._distance_row(durations, cond.speed_mps, cond.flight_path_angle_rad)
+        free.constrain(cond, ev.mass_kg, dist, self.duration_s, self.vehicle)   # trip distance, envelope
+        self.free = free
+        self._add_vehicle_residuals(problem, ev)
+        self._add_collocation(problem, ev, state_vars)
+        self._add_energy_and_outputs(problem, state_vars, dist, time_row, num, params)
+        self.built = True
+        self._initial_states_guess(problem, state_vars, ev, dur_guess)
+        return self
 
-        # ---- durations
+    # ------------------------------------------------------------------ build steps
+    def _add_durations(self, problem):
+        """Each segment's duration: fixed by its kinematics, or a variable (``free_duration``,
+        or a free trajectory's segment); returns (durations, their guesses)."""
+        P = self.prefix
         durations, dur_guess = [], []
         for g in self._segs:
             if g.kin.duration_s is None:
@@ -249,16 +282,12 @@ class Mission:
                                               description=f"duration of segment {g.segment.name} (free trajectory)")
             durations.append(g.duration)
             dur_guess.append(g.duration_guess)
-        symbolic_time = any(isinstance(T, ca.MX) for T in durations)
+        return durations, dur_guess
 
-        num = self._numeric_rows(dur_guess)
-        params = self.parameter_rows()
-        free = FreeSpeedRows(self, problem, self.modes, self.envelope, durations)
-        d0 = np.asarray(self._distance_row(dur_guess), float).ravel()
-        free.prescribed_leg_m = [d0[b] - d0[a] for a, b in self.leg_nodes()]
-        kin = free.rows(num)
-
-        # ---- body angle: free nodes are unknowns, prescribed nodes follow their schedule
+    def _add_body_angle(self, problem, num, params):
+        """Free nodes' body angle as unknowns, prescribed nodes on their schedule; returns
+        (theta row, pitch-rate row, the vehicle's initial guess)."""
+        K, P, labels = self.K, self.prefix, self.labels
         free_mask = np.ones(K, dtype=bool)
         for g in self._segs:
             if g.kin.body_angle is not None:
@@ -288,7 +317,7 @@ class Mission:
                                          labels=[l for l, f in zip(labels, free_mask) if f])
         pieces, rate_pieces = [], []
         ifree = 0
-        for gi, g in enumerate(self._segs):
+        for g in self._segs:
             if g.kin.body_angle is None:
                 th = theta_var[0, ifree:ifree + g.n]
                 ifree += g.n
@@ -302,12 +331,13 @@ class Mission:
                 rate = (thf - th0) / g.duration * ca.DM.ones(1, g.n)
             pieces.append(th)
             rate_pieces.append(rate)
-        theta = ca.horzcat(*pieces)
-        pitch_rate = ca.horzcat(*rate_pieces)
+        return ca.horzcat(*pieces), ca.horzcat(*rate_pieces), guess
 
-        # ---- vehicle unknowns
+    def _add_unknowns(self, problem, guess, params) -> dict:
+        """The vehicle's per-node unknowns as variables (``vehicle.unknowns()``)."""
+        K, P = self.K, self.prefix
         unknowns = {}
-        self.unknown_specs = list(veh.unknowns())
+        self.unknown_specs = list(self.vehicle.unknowns())
         for u in self.unknown_specs:
             rows = int(u.rows)
             init = np.asarray(guess.get(u.name, 0.0), float)
@@ -322,9 +352,12 @@ class Mission:
                                                 lower=np.broadcast_to(col(u.lower), (rows, K)),
                                                 upper=np.broadcast_to(col(u.upper), (rows, K)),
                                                 init=init, description=u.description)
+        return unknowns
 
-        # ---- states: one vector per state, joins shared
-        self.state_specs = list(veh.states())
+    def _add_states(self, problem):
+        """One vector per vehicle state over the mission, joins shared; returns
+        (state variables, their 1 x K rows at the nodes)."""
+        self.state_specs = list(self.vehicle.states())
         state_vars, state_rows = {}, {}
         idx = [int(i) for i in self.state_index]
         for st in self.state_specs:
@@ -334,46 +367,34 @@ class Mission:
                 (st.lower if np.isfinite(st.lower) else 0.0) + (st.upper if np.isfinite(st.upper) else 0.0))
             if st.initial is not None:
                 lower[0] = upper[0] = st.initial
-            x = problem.variable(f"{P}{st.name}", (1, self.N_state), unit=st.unit, scale=st.scale,
+            x = problem.variable(f"{self.prefix}{st.name}", (1, self.N_state), unit=st.unit, scale=st.scale,
                                  lower=lower.reshape(1, -1), upper=upper.reshape(1, -1),
                                  init=np.full((1, self.N_state), init0), description=st.description)
             state_vars[st.name] = x
             state_rows[st.name] = x[0, idx]
+        return state_vars, state_rows
 
-        # ---- node conditions and the one vehicle evaluation
-        if symbolic_time:
-            tpieces, t0 = [], 0.0
-            for g in self._segs:
-                tpieces.append(t0 + g.duration * _row(g.kin.s))
-                t0 = t0 + g.duration
-            time_row = ca.horzcat(*tpieces)
-        else:
-            time_row = _row(num["time_s"])
-        cond = NodeConditions(
-            time_s=time_row, altitude_m=_row(num["altitude_m"]), speed_mps=kin["speed_mps"],
-            flight_path_angle_rad=kin["flight_path_angle_rad"], acceleration_mps2=kin["acceleration_mps2"],
-            flight_path_angle_rate_radps=kin["flight_path_angle_rate_radps"],
-            body_angle_rad=theta, pitch_rate_radps=pitch_rate,
-            parameters={k: _row(v) for k, v in params.items()}, states=state_rows,
-            segment=self.segment_of_node, labels=labels)
-        ev = veh.evaluate(cond, unknowns)
-        self.evaluation = ev
+    def _time_row(self, durations, num):
+        if not any(isinstance(T, ca.MX) for T in durations):
+            return _row(num["time_s"])
+        tpieces, t0 = [], 0.0
+        for g in self._segs:
+            tpieces.append(t0 + g.duration * _row(g.kin.s))
+            t0 = t0 + g.duration
+        return ca.horzcat(*tpieces)
 
-        # ---- point-mass equations of motion in the path frame
-        m = ev.mass_kg
-        gam = cond.flight_path_angle_rad
-        V = cond.speed_mps
-        f_scale = float(getattr(ev, "force_scale_N", None) or _force_scale(veh))
+    def _add_equations_of_motion(self, problem, cond, ev):
+        """The point-mass equations in the path frame at every node (module docstring)."""
+        P, m = self.prefix, ev.mass_kg
+        gam, V = cond.flight_path_angle_rad, cond.speed_mps
+        f_scale = float(getattr(ev, "force_scale_N", None) or _force_scale(self.vehicle))
         r_t = ev.force_along_path_N - m * (G0 * ca.sin(gam) + cond.acceleration_mps2)
         r_n = ev.force_normal_N - m * (G0 * ca.cos(gam) + V * cond.flight_path_angle_rate_radps)
-        problem.constrain(f"{P}force_along_path", r_t, scale=f_scale, unit="N", labels=labels)
-        problem.constrain(f"{P}force_normal_to_path", r_n, scale=f_scale, unit="N", labels=labels)
-        self.duration_s = sum(durations[1:], durations[0]) if len(durations) > 1 else durations[0]
-        dist = self._distance_row(durations, V, gam)
-        free.constrain(cond, m, dist, self.duration_s, veh)     # joins, trip distance, envelope
-        self.free = free
+        problem.constrain(f"{P}force_along_path", r_t, scale=f_scale, unit="N", labels=self.labels)
+        problem.constrain(f"{P}force_normal_to_path", r_n, scale=f_scale, unit="N", labels=self.labels)
 
-        # ---- vehicle residuals
+    def _add_vehicle_residuals(self, problem, ev):
+        K, labels = self.K, self.labels
         for grp in ev.residuals:
             expr = grp.expr
             rows = int(expr.shape[0])
@@ -383,23 +404,22 @@ class Mission:
             rl = list(grp.row_labels) if grp.row_labels is not None else (
                 [f"row {r}" for r in range(rows)] if rows > 1 else [""])
             lab = [f"{labels[k]} {rl[r]}".rstrip() for k in cols for r in range(rows)]
-            problem.constrain(f"{P}{grp.name}", expr, kind=grp.kind, scale=grp.scale, unit=grp.unit, labels=lab)
+            problem.constrain(f"{self.prefix}{grp.name}", expr, kind=grp.kind, scale=grp.scale, unit=grp.unit,
+                              labels=lab)
 
-        # ---- state collocation
+    def _add_collocation(self, problem, ev, state_vars):
         for st in self.state_specs:
             if st.name not in ev.state_derivatives:
-                raise InputError(f"vehicle {veh.name!r}", f"declares state {st.name!r} but returns no derivative")
-            f = ev.state_derivatives[st.name]
-            defect = self._defects(state_vars[st.name], f)
+                raise InputError(f"vehicle {self.vehicle.name!r}",
+                                 f"declares state {st.name!r} but returns no derivative")
+            defect = self._defects(state_vars[st.name], ev.state_derivatives[st.name])
             lab = [f"{g.segment.name} node {j}" for g in self._segs for j in range(1, g.n)]
-            problem.constrain(f"{P}{st.name} collocation", defect, scale=st.scale, unit=st.unit, labels=lab)
+            problem.constrain(f"{self.prefix}{st.name} collocation", defect, scale=st.scale, unit=st.unit,
+                              labels=lab)
 
-        # ---- expressions for outputs and reports
-        self.cond = cond
-        self.unknowns = unknowns
-        self.theta = theta
-        self.states = state_vars
-        self.state_rows = state_rows
+    def _add_energy_and_outputs(self, problem, state_vars, dist, time_row, num, params):
+        """Energy, end-of-mission limits, the report rows and the summary outputs."""
+        P, veh, cond = self.prefix, self.vehicle, self.cond
         self.initial_states = {k: x[0, 0] for k, x in state_vars.items()}
         self.final_states = {k: x[0, self.N_state - 1] for k, x in state_vars.items()}
         self.segment_end_states = [{k: x[0, g.state0 + g.n - 1] for k, x in state_vars.items()} for g in self._segs]
@@ -411,25 +431,21 @@ class Mission:
         self.segment_energy_J = ca.vertcat(*[veh.energy_used_J(a, b) for a, b in
                                              zip(self.segment_start_states, self.segment_end_states)])
         self.rows = {
-            "time_s": (time_row, "s"), "altitude_m": (cond.altitude_m, "m"), "speed_mps": (V, "m/s"),
-            "flight_path_angle_rad": (gam, "rad"), "body_angle_rad": (theta, "rad"),
+            "time_s": (time_row, "s"), "altitude_m": (cond.altitude_m, "m"), "speed_mps": (cond.speed_mps, "m/s"),
+            "flight_path_angle_rad": (cond.flight_path_angle_rad, "rad"), "body_angle_rad": (self.theta, "rad"),
             "distance_m": (dist, "m"),
         }
-        if free.any_free:   # the prescribed profile beside the flown one (mission.csv, mission.png)
+        if self.free.any_free:   # the prescribed profile beside the flown one (mission.csv, mission.png)
             self.rows["profile_time_s"] = (_row(num["time_s"]), "s")
             self.rows["profile_speed_mps"] = (_row(num["speed_mps"]), "m/s")
         for k, row in params.items():
             if np.any(row != 0):
                 self.rows[k] = (_row(row), "rad" if k.endswith("_rad") else "-")
-        self.range_m = dist[0, K - 1]
+        self.range_m = dist[0, self.K - 1]
         problem.output(f"{P}battery_energy_kWh", self.energy_used_J / KWH, unit="kWh", summary=True)
         problem.output(f"{P}mission_time_min", self.duration_s / MINUTE, unit="min", summary=True)
         problem.output(f"{P}mission_range_nmi", self.range_m / NMI, unit="nmi", summary=True)
         problem.output(f"{P}segment_energy_kWh", self.segment_energy_J / KWH, unit="kWh")
-        self.problem = problem
-        self.built = True
-        self._initial_states_guess(problem, state_vars, ev, dur_guess)
-        return self
 
     # ------------------------------------------------------------------ pieces
     def _guess(self, num, params, theta_in):
