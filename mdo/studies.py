@@ -31,11 +31,17 @@ AIRCRAFT_OPTIONS = {
     "wake_samples": (int, 1, 15),
 }
 
-#: the free-trajectory options of a problem that offers them (problems/ga2p.py)
+#: the free-trajectory options of a problem that offers them (problems/ga2p.py, ga8p.py)
 TRAJECTORY_OPTIONS = {
     "trajectory": (str, "prescribed", "free"),
     "max_block_time_min": (float, 1.0, 1000.0),
 }
+
+
+def trajectory_envelope(max_block_time_min=None):
+    """The default free-trajectory ``Envelope`` with the problem's block-time option (min)."""
+    from .mission.trajectory import Envelope
+    return Envelope(max_block_time_s=None if max_block_time_min is None else max_block_time_min * 60.0)
 
 
 def minimize_battery_energy(problem, vehicle, mission, *, max_iter: int = 500):

@@ -31,9 +31,8 @@ from dataclasses import replace
 
 from mdo.core.units import FT, MPH, NMI
 from mdo.mission.profiles import ga_mission
-from mdo.mission.trajectory import Envelope
 from mdo.nlp import Problem
-from mdo.studies import AIRCRAFT_OPTIONS, TRAJECTORY_OPTIONS, minimize_battery_energy
+from mdo.studies import AIRCRAFT_OPTIONS, TRAJECTORY_OPTIONS, minimize_battery_energy, trajectory_envelope
 from mdo.vehicle.aircraft import Aircraft
 from mdo.vehicle.catalog import ga2p
 
@@ -65,6 +64,5 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
                          reserve_cruise_distance_m=reserve_cruise_distance_nmi * NMI,
                          cruise_altitude_m=cruise_altitude_ft * FT, cruise_speed_mps=cruise_speed_mph * MPH,
                          approach_drag_area_m2=approach_drag_area_m2, trajectory=trajectory,
-                         envelope=Envelope(max_block_time_s=None if max_block_time_min is None
-                                           else max_block_time_min * 60.0)).build(p)
+                         envelope=trajectory_envelope(max_block_time_min)).build(p)
     return minimize_battery_energy(p, vehicle, mission)

@@ -14,13 +14,13 @@ from dataclasses import replace
 from mdo.core.units import FT, MPH, NMI
 from mdo.mission.profiles import ga_mission
 from mdo.nlp import Problem
-from mdo.studies import AIRCRAFT_OPTIONS, minimize_battery_energy
+from mdo.studies import AIRCRAFT_OPTIONS, TRAJECTORY_OPTIONS, minimize_battery_energy, trajectory_envelope
 from mdo.vehicle.aircraft import Aircraft
 from mdo.vehicle.catalog import ga8p
 
 
 # allowed values of the -o options (mdo.nlp.options; `mdo run problems/ga8p.py --options`)
-OPTIONS = {**AIRCRAFT_OPTIONS,
+OPTIONS = {**AIRCRAFT_OPTIONS, **TRAJECTORY_OPTIONS,
     "max_span_m": (float, 5.0, 30.0),
     "approach_drag_area_m2": (float, 0.0, 2.0),
 }
@@ -32,7 +32,8 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
           n_stations: int = 16, wing_strips: int = 24, mass_model: str = "buildup", rotation: str = "inboard_up",
           coupling: str = "swirl", swirl_recovery: str = "bounded", limits: bool = True,
           tip_mach_limit: str = "nodes", allow_regeneration: bool = False, max_span_m: float | None = None,
-          approach_drag_area_m2: float = 0.40, wake_samples: int = 5):
+          approach_drag_area_m2: float = 0.40, wake_samples: int = 5, trajectory: str = "prescribed",
+          max_block_time_min: float | None = None):
     p = Problem("ga8p", "GA-8P whole-mission optimization (Clarke et al. Eq. 7)")
     cfg = ga8p(rotation)
     cfg = replace(cfg, battery=replace(cfg.battery, cells_series=cells_series, cells_parallel=cells_parallel),
@@ -44,5 +45,6 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
     mission = ga_mission(vehicle, nodes=nodes, cruise_distance_m=cruise_distance_nmi * NMI,
                          reserve_cruise_distance_m=reserve_cruise_distance_nmi * NMI,
                          cruise_altitude_m=cruise_altitude_ft * FT, cruise_speed_mps=cruise_speed_mph * MPH,
-                         approach_drag_area_m2=approach_drag_area_m2).build(p)
+                         approach_drag_area_m2=approach_drag_area_m2, trajectory=trajectory,
+                         envelope=trajectory_envelope(max_block_time_min)).build(p)
     return minimize_battery_energy(p, vehicle, mission)
