@@ -169,7 +169,8 @@ def _run_stages(args, options, folder, ws_data, progress) -> int:
     if staged:
         what = f"stage 2 of 2: {what}, from the baseline"
     code, sol = _solve_stage(problem, folder.stage, args, what, progress)
-    if staged and monotone and code == 1 and sol.status != "Maximum_Iterations_Exceeded":
+    if staged and monotone and code == 1 and not (args.max_iter is not None and
+                                                  sol.status == "Maximum_Iterations_Exceeded"):
         code, sol = _adaptive_retry(problem, baseline_sol, sol, folder, args, what, progress)
     where = folder.commit(sol.success, sol.status)
     _final_report(sol, where, folder, code, what)
@@ -178,7 +179,9 @@ def _run_stages(args, options, folder, ws_data, progress) -> int:
 
 def _adaptive_retry(problem, baseline_sol, failed, folder, args, what, progress) -> tuple:
     """DESIGN rule 7's fallback: the monotone barrier from the baseline ended without an
-    optimum (not an interrupt, not the iteration limit the user set), so its files move to
+    optimum (not an interrupt, not an iteration limit the user set with --max-iter; the
+    problem's own limit counts as a failure: GA-2P at 170 mph wanders 500 iterations with
+    the monotone barrier), so its files move to
     ``monotone/`` in the stage and the optimization starts again from the baseline with
     IPOPT's adaptive barrier (GA-4P: monotone ends in a local infeasibility, adaptive
     converges).  The new ``summary.json["barrier"]`` records the failed attempt."""
