@@ -5,17 +5,17 @@ duration T in closed form.  A freed segment keeps its **altitude profile** h(s) 
 s in [0, 1] (so its end altitudes, and the atmosphere at each node, are those of the
 profile) and frees
 
-* ``"speed"``: the airspeed at every node (the duration, hence the rate of climb
-  h'(s)/T, stays prescribed);
-* ``"free"``: the airspeed at every node and the duration T (bounded by
-  ``Envelope.duration_range`` times the prescribed one): speed and climb rate free.
+* ``"speed"``: its airspeed (the duration, hence the rate of climb h'(s)/T, stays
+  prescribed);
+* ``"free"``: its airspeed and its duration T (bounded by ``Envelope.duration_range``
+  times the prescribed one, and by the climb/descent rates): speed and climb rate free.
 
 A freed segment keeps its kind's speed form: linear in s from its start speed (the
 previous segment's end) to its end speed, which is a variable where the next segment
 is freed too (``FreeSpeedRows.rows``); constant-speed kinds keep one speed.  Speeds
 per node would be a polynomial the quadrature cannot integrate exactly against
 V dV/dt: measured on a polar cruise, the optimizer then oscillates the node speeds
-and gains energy from the aliasing (a worse optimum with more nodes).  With the
+and gains energy from the aliasing (a spuriously lower optimum with more nodes).  With the
 speed linear in time the kinetic-energy term is integrated exactly.  The kinematics
 follow from V(s), T and the prescribed h(s) (D the CGL differentiation matrix on
 [0, 1]; exact, h is a polynomial in s)::
