@@ -59,6 +59,7 @@ OPTIONS = {**AIRCRAFT_OPTIONS,
     "max_charge_current_A": (float, 0.1, 20.0),
     "n_azimuth": (int, 1, 12),
     "tol": (float, 1e-10, 1e-2),
+    "pitch": (str, "control", "schedule"),
 }
 
 
@@ -89,7 +90,7 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
           n_stations: int = 16, n_azimuth: int = 4, wing_strips: int = 16, mass_model: str = "buildup",
           rotation: str = "inboard_up", coupling: str = "swirl", swirl_recovery: str = "bounded",
           limits: bool = True, tip_mach_limit: str = "nodes", allow_regeneration: bool = True,
-          wake_samples: int = 5, tol: float = 1e-4):
+          wake_samples: int = 5, tol: float = 1e-4, pitch: str = "control"):
     p = Problem("ttw", "TTW tandem tilt-wing whole-mission optimization (Clarke et al. Eq. 7)")
     cfg = ttw(rotation)
     cfg = replace(cfg, battery=replace(cfg.battery, cells_series=cells_series, cells_parallel=cells_parallel,
@@ -99,7 +100,7 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
     vehicle = Aircraft(cfg, n_stations=n_stations, n_azimuth=n_azimuth, wing_strips=wing_strips,
                        mass_model=mass_model, coupling=coupling, swirl_recovery=swirl_recovery, limits=limits,
                        tip_mach_limit=tip_mach_limit, allow_regeneration=allow_regeneration,
-                       design_point_constraints=not analysis, wake_samples=wake_samples)
+                       design_point_constraints=not analysis, wake_samples=wake_samples, pitch=pitch)
     mission = evtol_mission(vehicle, nodes=nodes, cruise_distance_m=cruise_distance_nmi * NMI,
                             reserve_cruise_distance_m=reserve_cruise_distance_nmi * NMI,
                             cruise_altitude_m=cruise_altitude_ft * FT,

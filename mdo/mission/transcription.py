@@ -344,7 +344,7 @@ class Mission:
             init = np.broadcast_to(init.reshape(rows, -1) if init.size == rows * K else init, (rows, K))
             col = lambda v: np.broadcast_to(np.asarray(v, float).reshape(-1, 1), (rows, 1)) \
                 if np.size(v) == rows else np.asarray(v, float)  # noqa: E731
-            if u.only_where is not None:   # a control of some segments only (Unknown.only_where)
+            if u.only_where is not None or u.hold_where_uncollocated:   # a control of some nodes only
                 unknowns[u.name] = self._masked_unknown(problem, u, params, init, col)
                 continue
             unknowns[u.name] = problem.variable(f"{P}{u.name}", (rows, K), unit=u.unit,
@@ -541,25 +541,44 @@ class Mission:
                 problem.set_initial(f"{self.prefix}{st.name}", x.reshape(1, -1))
 
     def _masked_unknown(self, problem, u, params, init, col):
-        """An unknown that exists only at the nodes where the segment parameter
-        ``u.only_where`` is > 0: a variable of those columns, spread to all K nodes with
-        zeros elsewhere (a free variable with no effect would leave the NLP singular)."""
+        """An unknown that exists only at some nodes: where the segment parameter
+        ``u.only_where`` is > 0 (zeros elsewhere: a free variable with no effect would
+        leave the NLP singular), and, for ``u.hold_where_uncollocated``, not at a node
+        whose derivative the collocation ignores (it takes the next node's value there)."""
         K, rows = self.K, int(u.rows)
-        if u.only_where not in params:
+        if u.only_where is not None and u.only_where not in params:
             raise InputError(f"unknown {u.name!r}.only_where", f"a segment parameter of the vehicle, got "
                                                                f"{u.only_where!r}")
-        active = np.flatnonzero(np.asarray(params[u.only_where], float).ravel() * np.ones(K) > 0.0)
-        if active.size == 0:
+        on = np.ones(K, bool) if u.only_where is None else \
+            np.asarray(params[u.only_where], float).ravel() * np.ones(K) > 0.0
+        owner = np.arange(K)            # the node whose variable each node reads
+        if u.hold_where_uncollocated:
+            for k in self._uncollocated_nodes():
+                if k + 1 < K and on[k + 1] and self._segment_of(k) == self._segment_of(k + 1):
+                    owner[k] = k + 1
+        active = np.flatnonzero(on)
+        own = [int(k) for k in active if owner[k] == k]
+        if not own:
             return ca.DM.zeros(rows, K)
-        n = active.size
+        n = len(own)
         var = problem.variable(f"{self.prefix}{u.name}", (rows, n), unit=u.unit,
                                scale=np.broadcast_to(col(u.scale), (rows, n)),
                                lower=np.broadcast_to(col(u.lower), (rows, n)),
                                upper=np.broadcast_to(col(u.upper), (rows, n)),
-                               init=init[:, active], description=u.description,
-                               labels=[self.labels[k] for k in active])
-        spread = ca.DM.triplet(list(range(n)), [int(k) for k in active], ca.DM.ones(n), n, K)
+                               init=init[:, own], description=u.description,
+                               labels=[self.labels[k] for k in own])
+        index = {k: i for i, k in enumerate(own)}
+        cols = [int(k) for k in active]
+        spread = ca.DM.triplet([index[int(owner[k])] for k in cols], cols, ca.DM.ones(len(cols)), n, K)
         return ca.densify(ca.mtimes(var, spread))
+
+    def _uncollocated_nodes(self) -> list:
+        """Nodes whose state derivative enters no defect: the first node of each segment
+        in the differentiation form (its rows of D start at j = 1); none in the integration form."""
+        return [g.node0 for g in self._segs] if self.state_form == "differentiation" else []
+
+    def _segment_of(self, k: int) -> int:
+        return next(i for i, g in enumerate(self._segs) if g.node0 <= k < g.node0 + g.n)
 
     # ------------------------------------------------------------------ results
     def report_rows(self) -> dict:

@@ -150,9 +150,10 @@ class Aircraft:
                  swirl_recovery: str = "bounded", max_span_m: float | None = None,
                  misc_drag_fraction: float = 0.05, bounds: DesignBounds | None = None,
                  positions_free: bool | None = None, design_point_constraints: bool = True,
-                 wing_stall: bool | None = None, slipstream_breaks: bool = False, wake_samples: int = 5):
+                 wing_stall: bool | None = None, slipstream_breaks: bool = False, wake_samples: int = 5,
+                 pitch: str = "control"):
         self._check_options(config, free, coupling, mass_model, tip_mach_limit, swirl_recovery, wake_samples,
-                            stall_margin_cl, max_span_m)
+                            stall_margin_cl, max_span_m, pitch)
         self.config = config
         self.name = config.name
         self.free = set(free)
@@ -177,8 +178,12 @@ class Aircraft:
         self.design_point_constraints = bool(design_point_constraints)
         self.misc_drag_fraction = float(misc_drag_fraction)
         self.bounds = bounds or DesignBounds()
+        # variable-pitch groups fly their collective as a control at every node ("control"),
+        # or the segments' pitch_command_rad (the paper's Table 5 schedule, "schedule")
+        self.pitch = pitch
         self.groups = [RotorGroupModel(g, config.kind, any(config.wing(w).tilting for w in g.wings),
-                                       n_stations=self.n_stations, n_azimuth=self.n_azimuth)
+                                       n_stations=self.n_stations, n_azimuth=self.n_azimuth,
+                                       pitch_control=(pitch == "control" and g.variable_pitch))
                        for g in config.rotor_groups]
         self.parameters = {"wing_mounted_angle_rad": 0.0, "pitch_command_rad": 0.0, "drag_device_area_m2": 0.0,
                            "stall_margin_cl": self.stall_margin_cl, "flap_deflection": 0.0}
@@ -190,13 +195,14 @@ class Aircraft:
 
     @staticmethod
     def _check_options(config, free, coupling, mass_model, tip_mach_limit, swirl_recovery, wake_samples,
-                       stall_margin_cl, max_span_m):
+                       stall_margin_cl, max_span_m, pitch="control"):
         if not isinstance(config, VehicleConfig):
             raise InputError("config", f"a VehicleConfig, got {type(config).__name__}")
         choices = {"coupling": (coupling, ("swirl", "freestream", "local")),
                    "mass_model": (mass_model, ("buildup", "fixed")),
                    "tip_mach_limit": (tip_mach_limit, ("nodes", "design_point", "off")),
-                   "swirl_recovery": (swirl_recovery, ("bounded", "unbounded"))}
+                   "swirl_recovery": (swirl_recovery, ("bounded", "unbounded")),
+                   "pitch": (pitch, ("control", "schedule"))}
         for field_name, (value, allowed) in choices.items():
             if value not in allowed:
                 raise InputError(field_name, f"one of {', '.join(map(repr, allowed))}, got {value!r}")
@@ -532,9 +538,12 @@ class Aircraft:
         a_rot = alpha + self.rotor_axis_angle(gm, wma)
         v_ax, v_ip = V * ca.cos(a_rot), V * ca.sin(a_rot)
         omega, phi = unknowns[f"{g.name}.omega"], unknowns[f"{g.name}.phi"]
-        bm, residuals = gm.bemt_nodes(K, _num(wma).ravel(), env["pitch"], omega, v_ax, v_ip, env["rho"],
-                                      env["mu"], env["a_s"], phi)
         act = _num(nodes.parameters.get(f"{g.name}.active", _row(1.0, K))).ravel() * np.ones(K)
+        pitch = env["pitch"]
+        if gm.pitch_control:   # the collective where the rotor runs (a control), the schedule's where stopped
+            pitch = unknowns[f"{g.name}.collective_pitch"] + _row(1.0 - (act > 0.5)) * pitch
+        bm, residuals = gm.bemt_nodes(K, _num(wma).ravel(), pitch, omega, v_ax, v_ip, env["rho"],
+                                      env["mu"], env["a_s"], phi)
         on = np.flatnonzero(act > 0.5)
         off = np.flatnonzero(act <= 0.5)
         if off.size:   # stopped: hold the speed so the unused BEMT unknowns stay determined
@@ -544,6 +553,7 @@ class Aircraft:
         return {"T": a * bm["thrust_N"], "Q": a * bm["torque_Nm"], "H": a * bm["hforce_N"], "omega": omega,
                 "gamma": ca.repmat(a, self.n_stations, 1) * bm["gamma_m2ps"], "v_wake": v_ax + bm["va_mean_mps"],
                 "v_ax": v_ax, "cos": ca.cos(a_rot), "sin": ca.sin(a_rot), "bemt": bm, "residuals": residuals,
+                "pitch": pitch * _row(1.0, K),
                 "active": act, "on": on, "off": off,
                 "swirl_W": a * gm.swirl_power_W(bm, v_ax, env["rho"]) * g.count}
 
@@ -726,6 +736,8 @@ class Aircraft:
             eff = o["Q"] * o["omega"] / (mo["motor_power_in_W"] + 1e-9)
             per = {"thrust_N": Output(g.count * o["T"], "N", f"{g.name}: thrust of the group"),
                    "rotor_speed_rpm": Output(o["omega"] / u.RPM, "rpm"), "tip_mach": Output(tip, "-"),
+                   "collective_pitch_deg": Output(o["pitch"] / u.DEG, "deg",
+                                                  "collective pitch added to the blade twist (control or schedule)"),
                    "shaft_power_W": Output(g.count * o["Q"] * o["omega"], "W"),
                    "motor_power_fraction": Output(o["Q"] * o["omega"] / gm.design["P_rated"], "-",
                                                   "shaft power / continuous rating"),

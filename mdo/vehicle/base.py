@@ -100,6 +100,11 @@ class Unknown:
     description: str = ""
     row_labels: Sequence[str] | None = None
     only_where: str | None = None
+    #: a control that acts on the mission only through the state derivatives (a blade
+    #: pitch, not a rotor speed that a force balance fixes): where the collocation does not
+    #: look at the derivative (the first node of each segment in the differentiation
+    #: form) it would be undetermined, so there it holds the next node's value
+    hold_where_uncollocated: bool = False
 
 
 @dataclass(frozen=True)

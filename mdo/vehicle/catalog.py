@@ -157,7 +157,10 @@ def ttw(rotation: str = "inboard_up") -> VehicleConfig:
         design_thrust_N=5395.5, design_speed_mps=22.36 * u.MPH, design_cl=0.7,
         design_rpm=round(design_rpm_for_tip_mach(1.38, 18.253 * u.MPH, 0.0)),
         design_altitude_m=0.0, motor=MotorConfig(100e3, **TTW_MOTOR), airfoil="NACA_4412",
-        x_ahead_of_le_m=0.6, z_below_wing_m=0.0, rotation=rotation, nacelle_wetted_area_m2=1.5)
+        x_ahead_of_le_m=0.6, z_below_wing_m=0.0, rotation=rotation, nacelle_wetted_area_m2=1.5,
+        # variable-pitch rotors: Table 5 commands -5 to +20 deg; the stops are our choice, wide
+        # enough for hover-to-cruise blade angles (issue 17) and reported when a node reaches them
+        collective_range_deg=(-15.0, 45.0))
     fus = FuselageConfig(length_m=6.1, width_m=1.3, height_m=1.5, wetted_area_m2=20.0, tail_arm_m=4.0)
     return VehicleConfig(
         "TTW", "tilt_wing", wings=(main, tandem, fin), rotor_groups=(rotors,), fuselage=fus,

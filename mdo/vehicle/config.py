@@ -175,9 +175,18 @@ class RotorGroupConfig:
     tip_mach_max: float = 0.6
     folded_drag_area_m2: float = 0.0   # flat-plate area of one stopped/folded rotor (segments that switch it off)
     nacelle_wetted_area_m2: float = 0.0  # wetted area of the nacelle of ONE rotor (drag and mass)
+    # variable-pitch hub: the collective pitch's stops (deg, added to the blade's twist);
+    # None: a fixed-pitch propeller (the segment's pitch_command_rad, 0 by default)
+    collective_range_deg: tuple | None = None
 
     def __post_init__(self):
         check_positive(f"{self.name}.radius_m", self.radius_m, "m")
+        if self.collective_range_deg is not None:
+            r = tuple(float(x) for x in self.collective_range_deg)
+            if len(r) != 2 or not r[0] < r[1]:
+                raise InputError(f"{self.name}.collective_range_deg",
+                                 f"a pair (fine stop, coarse stop) with fine < coarse, got {self.collective_range_deg!r}")
+            check_range(f"{self.name}.collective_range_deg", np.asarray(r), -60.0, 90.0, "deg")
         check_range(f"{self.name}.hub_fraction", self.hub_fraction, 0.0, 0.5, inclusive=False)
         check_range(f"{self.name}.span_eta", np.asarray(self.span_eta, float), 0.0, 1.0)
         check_positive(f"{self.name}.blades", self.blades)
@@ -193,6 +202,10 @@ class RotorGroupConfig:
     @property
     def count(self) -> int:
         return 2 * len(self.span_eta) * len(self.wings)
+
+    @property
+    def variable_pitch(self) -> bool:
+        return self.collective_range_deg is not None
 
     @property
     def motor_rated_rpm(self) -> float:

@@ -140,6 +140,9 @@ def _rotor_guesses(ac, nodes, theta, alpha, vectored, need_t, need_n, V, h, wma,
             phi[:, sel] = ph if mm == mm_ else np.tile(ph, (mm_, 1))
             Q1[sel] = np.asarray(res["torque_Nm"], float).ravel()
         out[f"{g.name}.omega"] = omega
+        if gm.pitch_control:   # the collective starts at the segments' schedule
+            lo, hi = np.radians(g.collective_range_deg)
+            out[f"{g.name}.collective_pitch"] = np.clip(pitch, lo, hi)
         out[f"{g.name}.phi"] = np.clip(phi, PHI_MIN_RAD, PHI_MAX_RAD)
         _size_motor_guess(ac, gm, nodes, np.where(acts[gm.name], Q1, 0.0), omega, acts[gm.name])
         torques.append(np.where(acts[gm.name], Q1, 0.0))

@@ -57,8 +57,10 @@ def section_name(airfoil: str) -> str:
 class RotorGroupModel:
     """The models of one ``RotorGroupConfig`` (see the module docstring)."""
 
-    def __init__(self, group, vehicle_kind: str, tilting: bool, *, n_stations: int, n_azimuth: int):
+    def __init__(self, group, vehicle_kind: str, tilting: bool, *, n_stations: int, n_azimuth: int,
+                 pitch_control: bool = False):
         self.config = group
+        self.pitch_control = bool(pitch_control) and group.variable_pitch
         self.name = group.name
         self.tilting = bool(tilting)
         self.n_stations = int(n_stations)
@@ -153,12 +155,20 @@ class RotorGroupModel:
     # ------------------------------------------------------------------ nodes
     def unknowns(self) -> list:
         n, m = self.n_stations, self.n_azimuth
-        return [
+        out = [
             Unknown(f"{self.name}.omega", unit="rad/s", scale=self.omega_design, lower=0.05 * self.omega_design,
                     upper=3.0 * self.omega_design, description="rotor speed (all rotors of the group alike)"),
             Unknown(f"{self.name}.phi", unit="rad", scale=0.3, lower=PHI_MIN_RAD, upper=PHI_MAX_RAD, rows=n * m,
                     description="BEMT inflow angles (station fastest, then azimuth)"),
         ]
+        if self.pitch_control:   # a variable-pitch hub: the collective is a control where the rotor runs
+            lo, hi = (x * u.DEG for x in self.config.collective_range_deg)
+            out.append(Unknown(f"{self.name}.collective_pitch", unit="rad", scale=0.2, lower=lo, upper=hi,
+                               only_where=f"{self.name}.active", hold_where_uncollocated=True,
+                               description="collective pitch added to the blade twist (hub stops "
+                                           f"{self.config.collective_range_deg[0]:g} to "
+                                           f"{self.config.collective_range_deg[1]:g} deg)"))
+        return out
 
     def transition_nodes(self, wma) -> np.ndarray:
         """Nodes whose tilted rotors see in-plane flow worth azimuth averaging."""
