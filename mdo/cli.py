@@ -192,7 +192,8 @@ def _adaptive_retry(problem, baseline_sol, failed, folder, args, what, progress)
     for f in list(folder.stage.iterdir()):
         if f.name not in ("analysis", "monotone", "INCOMPLETE.txt"):
             f.rename(kept / f.name)
-    print(f"mdo: the monotone barrier ended {failed.status} after {failed.iterations} iterations "
+    why = f" ({failed.stopped_because})" if failed.stopped_because else ""
+    print(f"mdo: the monotone barrier ended {failed.status} after {failed.iterations} iterations{why} "
           f"(kept in monotone/); starting again from the baseline with the adaptive barrier")
     problem.adaptive_barrier_after(failed, "monotone")
     load_warm_start(problem, baseline_sol)

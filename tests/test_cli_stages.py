@@ -5,6 +5,8 @@ import subprocess
 import sys
 from pathlib import Path
 
+import pytest
+
 ROOT = Path(__file__).resolve().parents[1]
 POLAR = ROOT / "problems" / "polar_ga_mission.py"
 
@@ -83,3 +85,42 @@ def test_a_failed_monotone_optimization_is_retried_with_the_adaptive_barrier(tmp
     mono = _summary(tmp_path / "m")
     assert mono["barrier"] == {"mu_strategy": "monotone", "mu_init": 0.01}
     assert abs(mono["battery_energy_kWh"] - opt["battery_energy_kWh"]) < 1e-4 * mono["battery_energy_kWh"]
+
+
+def test_a_wandering_monotone_attempt_is_given_up_early(tmp_path, monkeypatch, capsys):
+    """The DivergenceWatch stops the monotone attempt (here at once: a watch that any dual
+    infeasibility trips) instead of letting it run to its iteration limit; the fallback
+    then converges and summary.json says why the first attempt stopped."""
+    from mdo import cli
+    from mdo.nlp import ipopt, problem as problem_mod
+
+    monkeypatch.setattr(problem_mod, "DivergenceWatch",
+                        lambda: ipopt.DivergenceWatch(after_iter=1, inf_du_max=-1.0, run=1))
+    out = tmp_path / "run"
+    code = cli.main(["run", str(POLAR), "-o", "design_wing_area=true", "--out", str(out), "--quiet"])
+    assert code == 0, capsys.readouterr().err
+    opt, failed = _summary(out), _summary(out / "monotone")
+    assert failed["status"] == "User_Requested_Stop" and failed["iterations"] <= 3
+    assert "dual infeasibility above -1" in failed["stopped_because"]
+    assert opt["status"] == "Solve_Succeeded" and "stopped_because" not in opt
+    assert opt["barrier"]["fallback_from"]["stopped_because"] == failed["stopped_because"]
+    assert "dual infeasibility above" in (out / "summary.md").read_text()
+
+
+def test_divergence_watch_reads_the_log_as_written(tmp_path):
+    from mdo.nlp.ipopt import Diverging, DivergenceWatch
+
+    log = tmp_path / "ipopt.log"
+    head = "iter    objective    inf_pr   inf_du lg(mu)  ||d||  lg(rg) alpha_du alpha_pr  ls\n"
+    rows = [f"{i:4d}{'r' if i % 7 == 0 else ' '} 1.0e+00 1.0e-03 {du:.2e}  -2.0 1.0e+00    -  1.0e+00 1.0e+00f  1\n"
+            for i, du in enumerate([1.0] * 100 + [1e5] * 9 + [10.0] + [1e6] * 10)]
+    w = DivergenceWatch(after_iter=100, inf_du_max=1e4, run=10)
+    log.write_text(head + "".join(rows[:110]))
+    w.check(log, 110)                       # nine large, then one small: not ten in a row
+    log.write_text(head + "".join(rows[:119]))
+    w.check(log, 119)                       # nine of the last ten
+    log.write_text(head + "".join(rows))
+    with pytest.raises(Diverging):
+        w.check(log, 120)
+    assert "iteration 119" in w.reason
+    assert DivergenceWatch().check(tmp_path / "missing.log", 500) is None

@@ -32,6 +32,7 @@ from ..core.errors import InputError
 from ..core.signals import interrupt_signal
 from .hessian import lagrangian_hessian_functions
 from .ipopt import (CRASH_ON_EXIT_STATUS, FRAGILE, FROM_BASELINE_OPTIONS, HESSIAN_CHOICES,  # noqa: F401
+                    DivergenceWatch,
                     INTERRUPT_STATUS, WARM_START_OPTIONS, _outcome, _signals_as_interrupts)
 # re-exported: the solved side lives in mdo.nlp.solution
 from .solution import (ACTIVE_SLACK, DESIGN_BOUND_FRACTION, Solution, _readable, _variable_arrays,  # noqa: F401
@@ -215,6 +216,7 @@ class Problem:
         }
         self._analysis = False
         self.barrier_fallback_from: dict | None = None   # the failed attempt a retry follows
+        self.divergence_watch: DivergenceWatch | None = None   # gives up a wandering solve (has a fallback)
 
     # ------------------------------------------------------------------ build
     def start_from_baseline(self) -> bool:
@@ -223,6 +225,7 @@ class Problem:
         True if they were applied (then ``adaptive_barrier_after`` may retry without them)."""
         if self.ipopt_options.get("mu_strategy", "adaptive") == "adaptive" and "mu_init" not in self.ipopt_options:
             self.ipopt_options.update(FROM_BASELINE_OPTIONS)
+            self.divergence_watch = DivergenceWatch()
             return True
         return False
 
@@ -233,9 +236,12 @@ class Problem:
         for key in FROM_BASELINE_OPTIONS:
             self.ipopt_options.pop(key, None)
         self.ipopt_options["mu_strategy"] = "adaptive"
+        self.divergence_watch = None
         self.barrier_fallback_from = {"mu_strategy": failed.barrier.get("mu_strategy", "?"),
                                       "status": failed.status, "iterations": failed.iterations,
                                       "objective": failed.objective, "folder": folder}
+        if failed.stopped_because:
+            self.barrier_fallback_from["stopped_because"] = failed.stopped_because
 
     def variable(self, name: str, shape=1, *, unit: str = "-", scale=1.0, lower=-np.inf,
                  upper=np.inf, init=0.0, design: bool = False, description: str = "",
@@ -533,6 +539,12 @@ class Problem:
         if hessian == "exact":   # the same matrix, computed by structure (mdo.nlp.hessian)
             plugin["hess_lag"] = lagrangian_hessian_functions(self, "split")
         self.opti.solver("ipopt", plugin, ipopt)
+        watch = self.divergence_watch if log_path is not None else None
+        if watch is not None:
+            watch.reason = None
+            self.opti.callback(lambda i: watch.check(log_path, i))
+        else:
+            self.opti.callback()
         if progress is not None:
             progress("building derivative functions (Jacobian, Hessian) and starting IPOPT")
 
@@ -556,6 +568,7 @@ class Problem:
         solution = Solution._from_debug(self, debug, status=status, success=success,
                                         iterations=n_iter, wall_time_s=wall,
                                         stats=stats, history=history)
+        solution.stopped_because = watch.reason if watch is not None else None
         solution.barrier = {"mu_strategy": ipopt.get("mu_strategy", "monotone"),
                             "mu_init": float(ipopt.get("mu_init", 0.1))}   # IPOPT's defaults
         if self.barrier_fallback_from:

@@ -54,6 +54,7 @@ class Solution:
     active: list = field(default_factory=list)        # what limits the design (active_limits)
     pinned: list = field(default_factory=list)        # variables at a bound (pinned_variables)
     barrier: dict = field(default_factory=dict)       # IPOPT's barrier strategy; "fallback_from" if retried
+    stopped_because: str | None = None                # why mdo stopped IPOPT early (DivergenceWatch)
     _values: dict = field(default_factory=dict, repr=False)
     _problem: object = field(default=None, repr=False)
     _debug: object = field(default=None, repr=False)
@@ -176,6 +177,8 @@ class Solution:
         d["timing"] = self.timing
         if self.barrier:
             d["barrier"] = self.barrier
+        if self.stopped_because:
+            d["stopped_because"] = self.stopped_because
         return d
 
     # -------------------------------------------------------------- files
@@ -209,7 +212,9 @@ class Solution:
             b = self.barrier
             lines.append(f"- barrier: {b['mu_strategy']}, mu_init {b['mu_init']:g}" + (
                 f" (after the {b['fallback_from']['mu_strategy']} barrier ended "
-                f"{b['fallback_from']['status']} in {b['fallback_from']['iterations']} iterations; "
+                f"{b['fallback_from']['status']} in {b['fallback_from']['iterations']} iterations"
+                + (f", {b['fallback_from']['stopped_because']}" if "stopped_because" in b["fallback_from"] else "")
+                + "; "
                 f"its files in {b['fallback_from']['folder']}/)" if "fallback_from" in b else ""))
         lines.append("")
         sv = self.summary_values()
