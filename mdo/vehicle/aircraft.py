@@ -31,7 +31,8 @@ inflow angles and pack current as unknowns:
    the pack current balance, state-of-charge rate;
 7. forces in the path frame: lift, drag, thrust and in-plane rotor force along the
    tilted rotor axis;
-8. the operating limits, each a named inequality group at every node (on by
+8. the operating limits (``aircraft_nodes.operating_limits``), each a named
+   inequality group at every node (on by
    default): motor power, torque and speed, throttle, tip Mach (``rotor_group``),
    cell current and voltage, no battery charging unless allowed, the wing's stall
    margin (``stall``), and the state of charge left at the end (``final_limits``).
@@ -59,7 +60,6 @@ from dataclasses import dataclass
 import casadi as ca
 import numpy as np
 
-from ..core import units as u
 from ..core.atmosphere import atmosphere
 from ..core.errors import InputError
 from ..core.smooth import smooth_max, smooth_min
@@ -67,11 +67,12 @@ from ..powertrain import Bus
 from ..wake import WakeRotor, influence_sum_parts, spin_for, wake_influences
 from ..wing import VLM, Body, body_drag, constant_area, profile_drag, trapezoid
 from ..wing.drag import form_factor_wing, skin_friction
+from .aircraft_nodes import _num, _row, node_outputs, operating_limits
 from .base import G0, NodeEvaluation, Output, ResidualGroup, State
 from .config import VehicleConfig, WingConfig, disks_in_one_plane
 from .mass import MassDesign, solve_togw, total_mass
 from .rotor_group import RotorGroupModel, section_name
-from .stall import stall_correction, stall_margin_rows
+from .stall import stall_correction
 
 __all__ = ["Aircraft", "DesignBounds"]
 
@@ -97,17 +98,6 @@ class DesignBounds:
     twist_deg: tuple = (-8.0, 8.0)         # absolute
     span_eta: tuple = (0.0, 1.0)           # absolute (fraction of the semispan)
     tip_clearance_m: float = 0.05          # between neighbouring disks, and disk to symmetry plane
-
-
-def _row(x, K=None) -> ca.DM:
-    a = np.asarray(x, dtype=float).reshape(1, -1)
-    if K is not None and a.size == 1:
-        a = np.repeat(a, K, axis=1)
-    return ca.DM(a)
-
-
-def _num(x) -> np.ndarray:
-    return np.asarray(ca.DM(x), dtype=float)
 
 
 class Aircraft:
@@ -522,8 +512,8 @@ class Aircraft:
         residuals.append(ResidualGroup("power balance", po["power_balance_W"], scale=self.bus.power_scale_W,
                                        unit="W"))
         if self.limits_on:
-            residuals += self._limits(nodes, rot, po, aero, env)
-        out = self._outputs(nodes, rot, aero, po, env)
+            residuals += operating_limits(self, nodes, rot, po, aero, env)
+        out = node_outputs(self, nodes, rot, aero, po, env)
         dist = {"strip_cl": Output(aero["vlm"]["cl"], "-", "section lift coefficient of each lattice strip "
                                                          "(with the wakes)")}
         return NodeEvaluation(mass_kg=self.togw, force_along_path_N=F_t, force_normal_N=F_n, residuals=residuals,
@@ -658,98 +648,6 @@ class Aircraft:
                     out[i] = w.flap_clmax_increment / (2 * math.pi)
         return out
 
-    def _limits(self, nodes, rot, po, aero, env) -> list:
-        """Operating limits at every node (module docstring), named groups."""
-        K = env["K"]
-        tip_nodes = self.tip_mach_limit == "nodes" and self.design_point_constraints
-        out = []
-        for gm in self.groups:
-            o = rot[gm.name]
-            lims = gm.limits(nodes, o["omega"], o["Q"], po["groups"][gm.name], env["V"], env["a_s"],
-                             tip_mach_at_nodes=tip_nodes)
-            on = o["on"]
-            for lim in lims:
-                if on.size < K:
-                    lim.expr, lim.columns = lim.expr[:, list(on)], on
-                out.append(lim)
-        pk = self.pack
-        out.append(ResidualGroup("cell current", po["cell_current_A"] - pk.max_cell_current_A, kind="<=",
-                                 scale=pk.max_cell_current_A, unit="A", row_labels=["cell current - max"]))
-        out.append(ResidualGroup("cell voltage", po["cell_voltage_V"] - pk.min_cell_voltage_V, kind=">=",
-                                 scale=1.0, unit="V", row_labels=["cell voltage - cut-off"]))
-        if not self.allow_regeneration:
-            out.append(ResidualGroup("no battery charging", po["cell_current_A"], kind=">=",
-                                     scale=pk.max_cell_current_A, unit="A", row_labels=["cell current >= 0"]))
-        else:   # windmilling may charge the pack, at most at the cell's charge rating
-            out.append(ResidualGroup("cell charge current", po["cell_current_A"] + pk.max_charge_current_A,
-                                     kind=">=", scale=pk.max_charge_current_A, unit="A",
-                                     row_labels=["cell current + max charge current"]))
-        margin = _num(nodes.parameters.get("stall_margin_cl", _row(self.stall_margin_cl, K))).ravel() * np.ones(K)
-        cols = np.flatnonzero(margin >= 0.0)
-        if not self.design_point_constraints:
-            # a frozen design cannot change its span loading: its analysis holds the strips
-            # below cl_max itself (margin 0) and reports the margin it has (as the tip Mach)
-            margin = np.where(margin >= 0.0, 0.0, margin)
-        expr, labels = stall_margin_rows(self.vlm, aero["vlm"], self.lifting_wings, self.strip_eta, env["rho"],
-                                         env["V"], env["mu"], _row(margin), nodes.parameters.get(
-                                             "flap_deflection", _row(0.0, K)), cols, exposed=self.strip_exposed)
-        if expr is not None:
-            out.append(ResidualGroup("stall margin", expr, kind="<=", scale=0.1, unit="-", row_labels=labels,
-                                     columns=cols))
-        return out
-
-    def _outputs(self, nodes, rot, aero, po, env) -> dict:
-        V, alpha = env["V"], env["alpha"]
-        r, q = aero["vlm"], aero["q"]
-        T_tot = sum(gm.config.count * rot[gm.name]["T"] for gm in self.groups)
-        P_shaft = sum(gm.config.count * rot[gm.name]["Q"] * rot[gm.name]["omega"] for gm in self.groups)
-        P_thrust = sum(gm.config.count * (rot[gm.name]["T"] * rot[gm.name]["cos"] - rot[gm.name]["H"]
-                                          * rot[gm.name]["sin"]) for gm in self.groups) * V
-        P_axial = sum(gm.config.count * rot[gm.name]["T"] * rot[gm.name]["v_ax"] for gm in self.groups)
-        out = {
-            "CL": Output(r["CL"], "-", "lift coefficient on S_ref"),
-            "CD": Output(aero["D"] / (q * self.S_ref + 1e-9), "-", "drag coefficient on S_ref"),
-            "CDi": Output(aero["D_i"] / (q * self.S_ref + 1e-9), "-", "induced drag coefficient (swirl credit bounded)"),
-            "lift_N": Output(aero["L"], "N"), "drag_N": Output(aero["D"], "N"),
-            "induced_drag_N": Output(aero["D_i"], "N"), "parasite_drag_N": Output(aero["D_parasite"], "N"),
-            "drag_device_drag_N": Output(aero["D_device"], "N", "gear/flap drag deployed on approach (in parasite)"),
-            "drag_device_deployment": Output(aero["deploy"], "-", "fraction of the segment's drag_device_area_m2"),
-            "swirl_recovered_power_W": Output(aero["swirl_recovered_W"], "W",
-                                              "near-field thrust power of the wing in the slipstreams' swirl"),
-            "swirl_available_power_W": Output(aero["swirl_available_W"], "W",
-                                              "rotational kinetic-energy flux of all slipstreams"),
-            "swirl_credited_power_W": Output(aero["swirl_credit_W"], "W", "swirl power credited (bounded)"),
-            "angle_of_attack_deg": Output(alpha / u.DEG, "deg"),
-            "thrust_N": Output(T_tot, "N", "total thrust"),
-            "thrust_power_W": Output(P_thrust, "W", "rotor force along the path times speed (useful propulsive power)"),
-            "shaft_power_W": Output(P_shaft, "W", "total shaft power"),
-            "propulsive_efficiency": Output(P_axial / (P_shaft + 1e-9), "-"),
-            "battery_power_W": Output(po["chemical_power_W"], "W", "chemical power drawn from the cells"),
-            "terminal_power_W": Output(po["battery_power_W"], "W"),
-            "state_of_charge": Output(nodes.states["state_of_charge"], "-"),
-            "cell_current_A": Output(po["cell_current_A"], "A"),
-            "cell_voltage_V": Output(po["cell_voltage_V"], "V"),
-        }
-        for i, gm in enumerate(self.groups):
-            o, mo, g = rot[gm.name], po["groups"][gm.name], gm.config
-            tip = ca.sqrt((o["omega"] * gm.design["R"]) ** 2 + V * V) / env["a_s"]
-            eff = o["Q"] * o["omega"] / (mo["motor_power_in_W"] + 1e-9)
-            per = {"thrust_N": Output(g.count * o["T"], "N", f"{g.name}: thrust of the group"),
-                   "rotor_speed_rpm": Output(o["omega"] / u.RPM, "rpm"), "tip_mach": Output(tip, "-"),
-                   "collective_pitch_deg": Output(o["pitch"] / u.DEG, "deg",
-                                                  "collective pitch added to the blade twist (control or schedule)"),
-                   "shaft_power_W": Output(g.count * o["Q"] * o["omega"], "W"),
-                   "motor_power_fraction": Output(o["Q"] * o["omega"] / gm.design["P_rated"], "-",
-                                                  "shaft power / continuous rating"),
-                   "throttle": Output(mo["throttle"], "-"), "motor_efficiency": Output(eff, "-"),
-                   "induced_axial_velocity_mps": Output(o["bemt"]["va_mean_mps"], "m/s",
-                                                        "mean axial induced velocity at the disk (wake pitch)")}
-            for k, v in per.items():
-                out[f"{g.name}.{k}"] = v
-            if i == 0:   # the first group under the plain names (single-group reports)
-                for k in ("rotor_speed_rpm", "tip_mach", "throttle", "motor_efficiency", "motor_power_fraction"):
-                    out[k] = per[k]
-        return out
 
     def _drag_device(self, nodes, unknowns, q):
         """Gear/flap drag where the segment allows it (``drag_device_area_m2`` > 0):
