@@ -60,15 +60,16 @@ class DivergenceWatch:
     def check(self, log_path, iteration: int) -> None:
         if iteration < self.after_iter + 1:
             return
-        du = _last_inf_du(log_path, self.run)
-        if len(du) == self.run and min(du) > self.inf_du_max:
+        rows = _last_inf_du(log_path, self.run)
+        if len(rows) == self.run and min(du for _, du in rows) > self.inf_du_max:
+            it, du = rows[-1]
             self.reason = (f"dual infeasibility above {self.inf_du_max:g} for {self.run} iterations "
-                           f"after iteration {self.after_iter} (last {du[-1]:.1e} at iteration {iteration - 1})")
+                           f"after iteration {self.after_iter} (last {du:.1e} at iteration {it})")
             raise Diverging(self.reason)
 
 
 def _last_inf_du(log_path, n: int) -> list:
-    """inf_du of the last ``n`` iteration lines of an IPOPT log (fewer if not yet written)."""
+    """(iteration, inf_du) of the last ``n`` iteration lines of an IPOPT log (fewer if not yet written)."""
     try:
         with open(log_path, "rb") as f:
             f.seek(0, os.SEEK_END)
@@ -81,7 +82,7 @@ def _last_inf_du(log_path, n: int) -> list:
         tok = line.split()
         if len(tok) >= 4 and tok[0].rstrip("r").isdigit():
             with contextlib.suppress(ValueError):
-                out.append(float(tok[3]))
+                out.append((int(tok[0].rstrip("r")), float(tok[3])))
     return out[-n:]
 
 
