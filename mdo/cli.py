@@ -21,6 +21,7 @@ import importlib
 import json
 import os
 import re
+import shutil
 import signal
 import sys
 import time
@@ -110,6 +111,7 @@ def _cmd_run(args) -> int:
             ws_data = read_solution(args.warm_start)
         except WarmStartError as exc:
             raise RunError(f"--{exc}") from exc
+    args._baseline = _read_baseline(args) if args.from_baseline is not None else None
     with contextlib.suppress(ValueError):
         signal.signal(signal.SIGTERM, raise_interrupt)   # timeout, job schedulers: as Ctrl-C, exit 143
     folder = RunFolder(out, args.force).open()
@@ -125,6 +127,28 @@ def _cmd_run(args) -> int:
     except BaseException:
         folder.abort()
         raise
+
+
+def _read_baseline(args) -> dict:
+    """``--from-baseline DIR``: the converged analysis run folder the optimization starts
+    from instead of solving stage 1 (checked before anything is created)."""
+    from .nlp.problem import WarmStartError, read_solution
+    from .nlp.run import RunError
+
+    for flag, on in (("--warm-start", args.warm_start is not None), ("--analysis", args.analysis),
+                     ("--no-baseline", args.no_baseline)):
+        if on:
+            raise RunError(f"--from-baseline: not with {flag} (it starts the optimization from DIR's baseline)")
+    path = Path(args.from_baseline) / "solution.json"
+    try:
+        data = read_solution(path)
+    except WarmStartError as exc:
+        raise RunError(f"--from-baseline: {exc}") from exc
+    if data.get("mode") != "analysis" or not data.get("success"):
+        raise RunError(f"--from-baseline: {args.from_baseline} is not a converged baseline analysis "
+                       f"(mode {data.get('mode')!r}, status {data.get('status')!r}); allowed: the folder "
+                       f"of a successful `mdo run --analysis` of this problem")
+    return data
 
 
 def _run_stages(args, options, folder, ws_data, progress) -> int:
@@ -143,11 +167,22 @@ def _run_stages(args, options, folder, ws_data, progress) -> int:
     monotone = False
     staged = (not args.analysis and ws_data is None and not args.no_baseline
               and any(v.design and not v.frozen for v in problem.variables.values()))
-    if ws_data is None and (staged or args.analysis):
+    given = getattr(args, "_baseline", None)
+    if given is not None and not staged:
+        from .nlp.run import RunError
+        raise RunError(f"--from-baseline: {args.problem} has no free design variables to optimize")
+    if staged and given is not None:   # --from-baseline: stage 1 is the user's converged analysis (copied)
+        shutil.copytree(args.from_baseline, folder.stage / "analysis")
+        load_warm_start(problem, given)
+        print(f"mdo: stage 1 of 2 taken from {args.from_baseline} (copied into analysis/): "
+              f"{given['objective']['value']:.6g} {given['objective'].get('unit', '')}")
+        baseline_sol = given
+        monotone = problem.start_from_baseline()
+    elif ws_data is None and (staged or args.analysis):
         code = _relaxed_start(args, options, problem if args.analysis else None, folder, progress)
         if code is not None:
             return code
-    if staged:
+    if staged and given is None:
         progress(f"building {args.problem} (baseline: design frozen)")
         baseline = load_problem_file(args.problem, analysis=True, options=options)
         if getattr(args, "_relaxed", None) is not None:
@@ -297,6 +332,10 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("--warm-start-partial", action="store_true",
                      help="accept a warm-start file that matches only some variables (the rest keep the "
                           "problem's guess)")
+    run.add_argument("--from-baseline", metavar="DIR",
+                     help="the run folder of a converged baseline analysis of this problem (mdo run "
+                          "--analysis): copied into OUT/analysis, and the optimization starts from it as "
+                          "from its own stage 1 (monotone barrier, adaptive fallback)")
     run.add_argument("--no-baseline", action="store_true",
                      help="optimize straight from the problem's initial guess (default for a problem with "
                           "design variables: first solve the baseline analysis into OUT/analysis, then "

@@ -124,3 +124,33 @@ def test_divergence_watch_reads_the_log_as_written(tmp_path):
         w.check(log, 120)
     assert "iteration 119" in w.reason
     assert DivergenceWatch().check(tmp_path / "missing.log", 500) is None
+
+
+def test_an_optimization_starts_from_a_given_baseline_folder(tmp_path, capsys):
+    """--from-baseline DIR: stage 1 is the user's converged analysis, copied (the original
+    untouched); the optimization then equals the one that solved its own baseline."""
+    from mdo import cli
+
+    base = tmp_path / "base"
+    assert cli.main(["run", str(POLAR), "-o", "design_wing_area=true", "--analysis", "--out", str(base),
+                     "--quiet"]) == 0
+    before = (base / "solution.json").read_bytes()
+    out = tmp_path / "opt"
+    code = cli.main(["run", str(POLAR), "-o", "design_wing_area=true", "--from-baseline", str(base),
+                     "--out", str(out), "--quiet"])
+    assert code == 0, capsys.readouterr().err
+    assert (base / "solution.json").read_bytes() == before
+    assert (out / "analysis" / "solution.json").read_bytes() == before
+    opt = _summary(out)
+    assert opt["mode"] == "optimization" and opt["barrier"]["mu_strategy"] == "monotone"
+    ref = tmp_path / "ref"
+    assert cli.main(["run", str(POLAR), "-o", "design_wing_area=true", "--out", str(ref), "--quiet"]) == 0
+    assert abs(opt["battery_energy_kWh"] - _summary(ref)["battery_energy_kWh"]) < 1e-6 * opt["battery_energy_kWh"]
+    # bad input: one line, exit 2, nothing created
+    for extra, text in ((["--from-baseline", str(out)], "not a converged baseline analysis"),
+                        (["--from-baseline", str(tmp_path / "none")], "--from-baseline"),
+                        (["--from-baseline", str(base), "--analysis"], "not with --analysis")):
+        code = cli.main(["run", str(POLAR), "-o", "design_wing_area=true", "--out", str(tmp_path / "x"),
+                         "--quiet", *extra])
+        assert code == 2 and text in capsys.readouterr().err
+        assert not (tmp_path / "x").exists()
