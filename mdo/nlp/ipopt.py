@@ -44,8 +44,9 @@ class Diverging(RuntimeError):
 class DivergenceWatch:
     """Give up a solve whose dual infeasibility has left for good: after iteration
     ``after_iter``, ``run`` consecutive iterations with IPOPT's (scaled) ``inf_du`` above
-    ``inf_du_max``.  Read from the IPOPT log as it is written (the callback sees the line of
-    the previous iteration).  For the monotone attempt from the baseline, which has a
+    ``inf_du_max``.  Read from the IPOPT log file as written so far: IPOPT writes it in
+    blocks, so the watch may see the last iterations late (measured: the previous line on
+    a small problem, up to 4 kB, about 40 iterations, on the TTW).  For the monotone attempt from the baseline, which has a
     fallback (``mdo run``): GA-2P at 170 mph spent 500 iterations and 675 s wandering with
     inf_du up to 1e6 before the fallback converged in 14; the TTW met its constraints at
     iteration 168 and then wandered 130 iterations with inf_du 1e4-1e13.  The committed
