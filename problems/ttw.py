@@ -33,7 +33,10 @@ Table 1 TTW cannot fly Table 5's profile (measured with this problem's analysis)
 * **Pack size**: with 150s x 120p (1227 kg packaged) the mission's energy leaves less
   than the 20 % reserve; 150s x 140p (1431 kg) closes the mission.
 
-Options (``-o KEY=VALUE``): ``nodes`` per segment (6), ``cruise_distance_nmi`` (50),
+The rotors are variable-pitch (hub stops -15/+45 deg): their collective is a control at
+every node (``pitch="control"``, default); ``-o pitch=schedule`` flies Table 5's commands.
+
+Options (``-o KEY=VALUE``): ``nodes`` per segment (6), ``pitch`` (control), ``cruise_distance_nmi`` (50),
 ``reserve_cruise_distance_nmi`` (5), ``cruise_altitude_ft``, ``cruise_speed_mph``,
 ``cells_series``/``cells_parallel`` (150/140), ``max_cell_current_A`` (15) and ``max_charge_current_A`` (4, above), ``swirl_recovery``, ``limits``,
 ``tip_mach_limit``, ``allow_regeneration`` (on here, above), ``n_stations`` (16), ``n_azimuth`` (4, transition
