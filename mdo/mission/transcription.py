@@ -552,9 +552,9 @@ class Mission:
         on = np.ones(K, bool) if u.only_where is None else \
             np.asarray(params[u.only_where], float).ravel() * np.ones(K) > 0.0
         owner = np.arange(K)            # the node whose variable each node reads
-        if u.hold_where_uncollocated:
+        if u.hold_where_uncollocated:   # a segment has >= 2 nodes: node0 + 1 is in the same one
             for k in self._uncollocated_nodes():
-                if k + 1 < K and on[k + 1] and self._segment_of(k) == self._segment_of(k + 1):
+                if on[k + 1]:
                     owner[k] = k + 1
         active = np.flatnonzero(on)
         own = [int(k) for k in active if owner[k] == k]
@@ -576,9 +576,6 @@ class Mission:
         """Nodes whose state derivative enters no defect: the first node of each segment
         in the differentiation form (its rows of D start at j = 1); none in the integration form."""
         return [g.node0 for g in self._segs] if self.state_form == "differentiation" else []
-
-    def _segment_of(self, k: int) -> int:
-        return next(i for i, g in enumerate(self._segs) if g.node0 <= k < g.node0 + g.n)
 
     # ------------------------------------------------------------------ results
     def report_rows(self) -> dict:

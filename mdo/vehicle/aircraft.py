@@ -173,7 +173,7 @@ class Aircraft:
         self.pitch = pitch
         self.groups = [RotorGroupModel(g, config.kind, any(config.wing(w).tilting for w in g.wings),
                                        n_stations=self.n_stations, n_azimuth=self.n_azimuth,
-                                       pitch_control=(pitch == "control" and g.variable_pitch))
+                                       pitch_control=(pitch == "control"))
                        for g in config.rotor_groups]
         self.parameters = {"wing_mounted_angle_rad": 0.0, "pitch_command_rad": 0.0, "drag_device_area_m2": 0.0,
                            "stall_margin_cl": self.stall_margin_cl, "flap_deflection": 0.0}

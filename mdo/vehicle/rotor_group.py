@@ -60,7 +60,7 @@ class RotorGroupModel:
     def __init__(self, group, vehicle_kind: str, tilting: bool, *, n_stations: int, n_azimuth: int,
                  pitch_control: bool = False):
         self.config = group
-        self.pitch_control = bool(pitch_control) and group.variable_pitch
+        self.pitch_control = bool(pitch_control) and group.variable_pitch   # a fixed-pitch group flies the schedule
         self.name = group.name
         self.tilting = bool(tilting)
         self.n_stations = int(n_stations)
