@@ -78,7 +78,9 @@ class Airfoil:
             text = str(spec)
             geom = text.split("@", 1)[0]
             entry = CATALOG.get(normalize(geom))
-            if entry is not None and entry.shipped and not re.fullmatch(r"naca\d{4,5}", normalize(geom)):
+            # a shipped section is read from its coordinates unless its name is a valid NACA
+            # 4- or 5-digit code (the 6-series "NACA_63_412" is not: 5-digit codes have 0/1 third)
+            if entry is not None and entry.shipped and not re.fullmatch(r"naca(\d{4}|\d\d[01]\d\d)", normalize(geom)):
                 # a shipped section with another transition setting: its own coordinates
                 from .data_io import read_coordinates
                 _, up, lo = read_coordinates(entry.coordinate_path)

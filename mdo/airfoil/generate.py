@@ -187,6 +187,12 @@ def cache_dir() -> Path:
     return Path(os.environ.get("MDO_AIRFOIL_CACHE", Path.home() / ".cache" / "mdo" / "airfoils"))
 
 
+#: Generated sections the package ships (the reference aircraft's tripped sections), so
+#: that a plain install needs no NeuralFoil to fly them; written by ``python -m
+#: mdo.airfoil.generate SPEC...`` and read before the cache (``data/generated/SOURCES.md``).
+SHIPPED_DIR = Path(__file__).resolve().parent / "data" / "generated"
+
+
 def _attached_range(alpha, cl):
     """Indices of the attached range: from cl_min - 1 deg to cl_max + 1 deg around alpha 0."""
     i_max = int(np.argmax(np.where(alpha > -2.0, cl, -np.inf)))
@@ -229,8 +235,12 @@ def generate_polars(spec: SectionSpec, reynolds_levels=REYNOLDS_LEVELS, *, folde
 
     The Reynolds number in a file name is an integer.  Returns the file paths.
     """
+    if folder is None and not refresh:
+        shipped = _polar_files(SHIPPED_DIR / spec.key, spec.key, reynolds_levels)
+        if all(p.exists() for p in shipped) and (SHIPPED_DIR / spec.key / f"{spec.key}_coordinates.txt").exists():
+            return shipped
     folder = Path(folder) if folder is not None else cache_dir() / spec.key
-    paths = [folder / f"{spec.key}_polar_Re_{int(round(r))}.txt" for r in reynolds_levels]
+    paths = _polar_files(folder, spec.key, reynolds_levels)
     coords_path = folder / f"{spec.key}_coordinates.txt"
     if not refresh and coords_path.exists() and all(p.exists() for p in paths):
         return paths
@@ -245,6 +255,10 @@ def generate_polars(spec: SectionSpec, reynolds_levels=REYNOLDS_LEVELS, *, folde
         keep = _attached_range(a, cl) & (cd > 0)
         _write_polar(path, title, spec, float(re_), a[keep], cl[keep], cd[keep], cm[keep])
     return paths
+
+
+def _polar_files(folder: Path, key: str, reynolds_levels) -> list[Path]:
+    return [folder / f"{key}_polar_Re_{int(round(r))}.txt" for r in reynolds_levels]
 
 
 _SPEC_RE = re.compile(r"^(?P<geom>[^@]+?)\s*(?:@(?P<opts>.*))?$")
@@ -289,3 +303,18 @@ def parse_spec(text: str) -> SectionSpec:
         xy = np.vstack([upper[::-1], lower[1:]])
         return SectionSpec(coordinates=tuple(map(tuple, xy.round(7))), title=name or path.stem, **kw)
     raise InputError("airfoil", f"{geom!r} is neither a NACA 4/5-digit code nor a coordinate file")
+
+
+def _ship(specs) -> None:
+    """Write the polars of each section spec text into :data:`SHIPPED_DIR` (needs NeuralFoil)."""
+    from .airfoil import Airfoil
+    for text in specs:
+        af = Airfoil.from_name(text)
+        spec = af.spec
+        generate_polars(spec, folder=SHIPPED_DIR / spec.key, refresh=True)
+        print(f"{text}: {SHIPPED_DIR / spec.key}")
+
+
+if __name__ == "__main__":
+    import sys
+    _ship(sys.argv[1:])

@@ -36,6 +36,7 @@ from ..core.errors import InputError, check_positive, check_range
 from .esc import ESC_EFFICIENCY, ESC_SMOOTHING_W, esc_input_power_W
 from .motor import DCMotor, motor_current
 from .pack import Pack
+from .pmsm import drive_node
 
 __all__ = ["Bus", "MotorGroup", "Powertrain", "NODE_INPUTS", "NODE_OUTPUTS",
            "propeller_torque_law"]
@@ -355,12 +356,15 @@ def propeller_torque_law(rated_torque_Nm, rated_speed_radps):
 
 @dataclass
 class MotorGroup:
-    """``n_motors`` identical motors, each with its ESC, driving one rotor group."""
+    """``n_motors`` identical motors driving one rotor group: a :class:`DCMotor` behind an
+    ESC of flat ``esc_efficiency`` (the paper's model), or a :class:`~mdo.powertrain.pmsm.PMSM`
+    with its loss-model ``inverter`` (then ``esc_efficiency`` is not used)."""
 
     name: str
-    motor: DCMotor
+    motor: object
     n_motors: int
     esc_efficiency: float = ESC_EFFICIENCY
+    inverter: object = None
 
 
 @dataclass
@@ -402,8 +406,18 @@ class Bus:
                 "lower": -imax, "upper": 3.0 * imax,
                 "description": "pack current, root of V_pack(s, I) I = P_bus (Eq. N1)"}
 
-    def motor_outputs(self, group: MotorGroup, torque_Nm, omega_radps) -> dict:
+    def motor_outputs(self, group: MotorGroup, torque_Nm, omega_radps, bus_voltage_V=None) -> dict:
+        """One motor of ``group`` at (Q, omega): its current, voltage, electrical input and
+        the power it draws from the bus (``esc_power_in_W``: behind the ESC or inverter).
+        ``bus_voltage_V`` (the pack's terminal voltage) sets an inverter's switching loss;
+        default the pack's nominal voltage."""
         m = group.motor
+        if group.inverter is not None:     # PMSM + inverter (mdo.powertrain.pmsm, Eqs. P1-P8)
+            v_bus = float(self.pack.nominal_voltage_V) if bus_voltage_V is None else bus_voltage_V
+            d = drive_node(m, group.inverter, torque_Nm, omega_radps, v_bus)
+            return {"motor_current_A": d["motor_current_A"], "motor_voltage_V": d["motor_voltage_V"],
+                    "motor_power_in_W": d["motor_power_in_W"], "shaft_power_W": d["shaft_power_W"],
+                    "esc_power_in_W": d["bus_power_W"]}
         i_m = motor_current(torque_Nm, m.kv_radps_per_V, m.no_load_current_A)
         v_m = omega_radps / m.kv_radps_per_V + i_m * m.resistance_ohm
         p_m = v_m * i_m
@@ -414,16 +428,16 @@ class Bus:
     def evaluate(self, torques, omegas, soc, battery_current_A) -> dict:
         """Per group (``out["groups"][name]``) and pack outputs, as in ``NODE_OUTPUTS``."""
         pk = self.pack
-        per = {g.name: self.motor_outputs(g, q, w) for g, q, w in zip(self.groups, torques, omegas)}
-        p_bus = self.aux_power_W
-        for g in self.groups:
-            p_bus = p_bus + g.n_motors * per[g.name]["esc_power_in_W"]
         ib = battery_current_A
         i_cell = ib / pk.n_parallel
         v_cell = pk.cell.voltage(soc, i_cell, pk.temperature_C)
         u_cell = pk.cell.ocv(soc)
         v_pack = pk.n_series * v_cell
         u_pack = pk.n_series * u_cell
+        per = {g.name: self.motor_outputs(g, q, w, v_pack) for g, q, w in zip(self.groups, torques, omegas)}
+        p_bus = self.aux_power_W
+        for g in self.groups:
+            p_bus = p_bus + g.n_motors * per[g.name]["esc_power_in_W"]
         for g in self.groups:
             o = per[g.name]
             o["throttle"] = o["motor_voltage_V"] / v_pack
@@ -438,12 +452,18 @@ class Bus:
     def analyze(self, torques, omegas, soc) -> dict:
         """Numbers: explicit motors, bracketed pack current (Eq. N1); adds ``battery_current_A``."""
         s = np.atleast_1d(np.asarray(soc, float))
-        p_bus = self.aux_power_W
-        for g, q, w in zip(self.groups, torques, omegas):
-            p_bus = p_bus + g.n_motors * np.asarray(self.motor_outputs(g, np.asarray(q, float),
-                                                                       np.asarray(w, float))["esc_power_in_W"])
-        p_bus, s = np.broadcast_arrays(np.atleast_1d(p_bus), s)
-        ib = np.atleast_1d(self.pack.current_for_power(p_bus, s))
+        v_bus = None
+        for _ in range(3):   # an inverter's loss depends on the bus voltage, which the current sets
+            p_bus = self.aux_power_W
+            for g, q, w in zip(self.groups, torques, omegas):
+                p_bus = p_bus + g.n_motors * np.asarray(self.motor_outputs(g, np.asarray(q, float),
+                                                                           np.asarray(w, float), v_bus)["esc_power_in_W"])
+            p_bus, s = np.broadcast_arrays(np.atleast_1d(p_bus), s)
+            ib = np.atleast_1d(self.pack.current_for_power(p_bus, s))
+            if not any(g.inverter is not None for g in self.groups):
+                break
+            pk = self.pack
+            v_bus = pk.n_series * np.asarray(pk.cell.voltage(s, ib / pk.n_parallel, pk.temperature_C), float)
         out = self.evaluate([np.asarray(q, float) for q in torques], [np.asarray(w, float) for w in omegas], s, ib)
         out["battery_current_A"] = ib
         return out

@@ -66,6 +66,7 @@ from ..core.smooth import smooth_max, smooth_min
 from ..powertrain import Bus
 from ..wake import WakeRotor, influence_sum_parts, spin_for, wake_influences
 from ..wing import VLM, Body, body_drag, constant_area, profile_drag, trapezoid
+from ..wing.buildup import CP_AIR
 from ..wing.drag import form_factor_wing, skin_friction
 from .aircraft_nodes import _num, _row, node_outputs, operating_limits
 from .base import G0, NodeEvaluation, Output, ResidualGroup, State
@@ -138,7 +139,7 @@ class Aircraft:
                  coupling: str = "swirl", mass_model: str = "buildup", limits: bool = True,
                  tip_mach_limit: str = "nodes", stall_margin_cl: float = 0.1, allow_regeneration: bool = False,
                  swirl_recovery: str = "bounded", max_span_m: float | None = None,
-                 misc_drag_fraction: float = 0.05, bounds: DesignBounds | None = None,
+                 bounds: DesignBounds | None = None,
                  positions_free: bool | None = None, design_point_constraints: bool = True,
                  wing_stall: bool | None = None, slipstream_breaks: bool = False, wake_samples: int = 5,
                  pitch: str = "control"):
@@ -166,7 +167,6 @@ class Aircraft:
         self.wake_samples = int(wake_samples)
         # design-point tip Mach and disk clearance; off for the analysis of a design that violates them (GA-8P)
         self.design_point_constraints = bool(design_point_constraints)
-        self.misc_drag_fraction = float(misc_drag_fraction)
         self.bounds = bounds or DesignBounds()
         # variable-pitch groups fly their collective as a control at every node ("control"),
         # or the segments' pitch_command_rad (the paper's Table 5 schedule, "schedule")
@@ -401,6 +401,7 @@ class Aircraft:
         self.strip_exposed = np.array([self.strip_eta[i] * semis.get(names[si], 0.0) > half_width
                                        for i, si in enumerate(self.vlm.strip_surface)])
         self.bodies = self.body_list()
+        self.nacelles = self.nacelle_bodies()
         self.fins = cfg.fins
         problem.output("wing_aspect_ratio", self.design["wings"][main.name]["span"] ** 2 / main.area_m2, unit="-",
                        summary=True)
@@ -416,18 +417,24 @@ class Aircraft:
         return np.array([y[i] / half[si] for i, si in enumerate(vlm.strip_surface)])
 
     def body_list(self) -> list:
-        """Non-lifting bodies of the drag build-up (Raymer): the fuselage and each group's nacelles."""
+        """Non-lifting bodies of the drag build-up (Raymer): the fuselage (freestream) and each
+        group's nacelles (scrubbed by that group's slipstream, :meth:`drag_buildup`)."""
         f = self.config.fuselage
         bodies = [Body("fuselage", f.length_m, math.sqrt(f.width_m * f.height_m), "fuselage", 1.0,
                        wetted_area=f.wetted_area_m2)]
+        return bodies
+
+    def nacelle_bodies(self) -> dict:
+        """{group name: Body} for the groups with nacelles: a body of fineness 3 with the
+        configured wetted area (pi d l = A, l = 3 d), the group's interference factor."""
+        out = {}
         for gm in self.groups:
             a = gm.config.nacelle_wetted_area_m2
             if a:
-                # a body of fineness 3 with the configured wetted area: pi d l = A, l = 3 d
                 dn = math.sqrt(a / (3 * math.pi))
-                bodies.append(Body(f"nacelle {gm.name}", 3 * dn, dn, "nacelle", 1.3, count=gm.config.count,
-                                   wetted_area=a))
-        return bodies
+                out[gm.name] = Body(f"nacelle {gm.name}", 3 * dn, dn, "nacelle", gm.config.nacelle_interference,
+                                    count=gm.config.count, wetted_area=a)
+        return out
 
     def _no_overlap(self, problem):
         """Disks must not overlap each other (any groups) or cross the symmetry plane (Eq. 7's R_max)."""
@@ -497,17 +504,20 @@ class Aircraft:
         pitch = nodes.parameters.get("pitch_command_rad", _row(0.0, K))
         env = dict(K=K, rho=rho, mu=mu, a_s=a_s, V=V, alpha=alpha, wma=wma, pitch=pitch)
         rot = {gm.name: self._rotor_nodes(gm, nodes, unknowns, env) for gm in self.groups}
-        aero = self._aerodynamics(nodes, unknowns, rot, env)
+        soc = nodes.states["state_of_charge"]
+        ib = unknowns["battery_current_A"]
+        po = self.bus.evaluate([rot[gm.name]["Q"] for gm in self.groups],
+                               [rot[gm.name]["omega"] for gm in self.groups], soc, ib)
+        # motor and inverter heat, carried off by the cooling air (its drag in the build-up)
+        heat_W = sum(gm.config.count * (po["groups"][gm.name]["esc_power_in_W"]
+                                        - rot[gm.name]["Q"] * rot[gm.name]["omega"]) for gm in self.groups)
+        aero = self._aerodynamics(nodes, unknowns, rot, env, heat_W)
         F_t, F_n = -aero["D"], aero["L"]
         for gm in self.groups:
             o = rot[gm.name]
             n = gm.config.count
             F_t = F_t + n * (o["T"] * o["cos"] - o["H"] * o["sin"])
             F_n = F_n + n * (o["T"] * o["sin"] + o["H"] * o["cos"])
-        soc = nodes.states["state_of_charge"]
-        ib = unknowns["battery_current_A"]
-        po = self.bus.evaluate([rot[gm.name]["Q"] for gm in self.groups],
-                               [rot[gm.name]["omega"] for gm in self.groups], soc, ib)
         residuals = [r_ for gm in self.groups for r_ in rot[gm.name]["residuals"]]
         residuals.append(ResidualGroup("power balance", po["power_balance_W"], scale=self.bus.power_scale_W,
                                        unit="W"))
@@ -547,7 +557,7 @@ class Aircraft:
                 "active": act, "on": on, "off": off,
                 "swirl_W": a * gm.swirl_power_W(bm, v_ax, env["rho"]) * g.count}
 
-    def _aerodynamics(self, nodes, unknowns, rot, env) -> dict:
+    def _aerodynamics(self, nodes, unknowns, rot, env, heat_W=None) -> dict:
         """Wake at the wing, the lattice, the bounded swirl credit and the drag build-up."""
         K, V, rho, mu, a_s, alpha, wma = (env[k] for k in ("K", "V", "rho", "mu", "a_s", "alpha", "wma"))
         gam_r, om_r, vw_r = [], [], []
@@ -576,24 +586,36 @@ class Aircraft:
         else:
             credit, D_i = recovered, r["D_i"]
         stopped = {gm.name: _row(1.0 - rot[gm.name]["active"]) for gm in self.groups if rot[gm.name]["off"].size}
-        b = self.drag_buildup(self.vlm, r, rho, mu, V, mach, stopped)
+        b = self.drag_buildup(self.vlm, r, rho, mu, V, mach, stopped,
+                              thrust={gm.name: rot[gm.name]["T"] for gm in self.groups}, heat_W=heat_W)
         pd, L_stall, D_folded = b["pd"], b["L_stall"], b["D_folded"]
         D_device, deploy = self._drag_device(nodes, unknowns, q)
         D_parasite = b["D_parasite"] + D_device
         return {"vlm": r, "pd": pd, "D": D_i + D_parasite, "L": r["L"] + L_stall, "D_i": D_i,
                 "D_parasite": D_parasite, "D_device": D_device, "deploy": deploy, "q": q, "D_folded": D_folded,
+                "drag_terms": b["terms"],
                 "swirl_recovered_W": recovered, "swirl_available_W": available, "swirl_credit_W": credit}
 
-    def drag_buildup(self, vlm, r, rho, mu, V, mach, stopped=None) -> dict:
+    def drag_buildup(self, vlm, r, rho, mu, V, mach, stopped=None, thrust=None, heat_W=None) -> dict:
         """Everything but the induced drag and the approach drag device, for a lattice
-        solution ``r`` of ``vlm`` (rows 1 x K, numbers or CasADi): section profile drag
-        (:func:`~mdo.wing.profile_drag`), the post-stall strips of a tilt-wing
-        (:func:`stall_correction`), fuselage and nacelles (Raymer's component build-up,
-        :func:`~mdo.wing.body_drag`), fins (flat-plate skin friction x form factor x
-        wetted area 2.04 S), the drag area of each stopped/folded group times
-        ``stopped[group]`` (1 x K fraction), all times ``1 + misc_drag_fraction``.
+        solution ``r`` of ``vlm`` (rows 1 x K, numbers or CasADi), each term in N:
+
+        * ``profile``: section profile drag of every strip at its local dynamic pressure and
+          Reynolds number (:func:`~mdo.wing.profile_drag`; the airfoil name carries the
+          transition setting, e.g. tripped at 10 % chord), plus the post-stall strips of a
+          tilt-wing (:func:`stall_correction`);
+        * ``fuselage``: Raymer's component build-up (:func:`~mdo.wing.body_drag`);
+        * ``nacelles``: the same, scrubbed by the group's slipstream (:meth:`_nacelle_drag`;
+          ``thrust`` {group: thrust per rotor, 1 x K}; freestream without it);
+        * ``fins``: flat-plate skin friction x form factor x wetted area 2.04 S;
+        * ``folded``: the drag area of each stopped/folded group times ``stopped[group]``;
+        * ``leakage``: ``config.drag.leakage_protuberance_fraction`` of the terms above;
+        * ``cooling``: the motor and inverter heat ``heat_W`` (1 x K, W) carried off by
+          ram air, Eq. B3 of :mod:`mdo.wing.buildup`: ``D = zeta V P_heat / (cp dT)``.
+
         The model and the initial guess both use it.  Returns ``pd`` (profile drag
-        terms), ``L_stall``, ``D_folded`` and ``D_parasite`` (N)."""
+        terms), ``L_stall``, ``D_folded``, ``D_parasite`` (N) and ``terms`` {name: N}."""
+        cfg = self.config.drag
         q = 0.5 * rho * V * V
         pd = profile_drag(vlm, r, rho, mu, mach)
         L_stall, D_stall = stall_correction(vlm, r, pd, rho, V) if self.wing_stall else (0.0, 0.0)
@@ -610,8 +632,33 @@ class Aircraft:
             A = gm.config.folded_drag_area_m2
             if A and stopped is not None and gm.name in stopped:
                 D_folded = D_folded + q * stopped[gm.name] * gm.config.count * A
-        D_parasite = (pd["D_p"] + D_stall + D_bodies + D_fin + D_folded) * (1.0 + self.misc_drag_fraction)
-        return {"pd": pd, "L_stall": L_stall, "D_folded": D_folded, "D_parasite": D_parasite}
+        terms = {"profile": pd["D_p"] + D_stall, "fuselage": D_bodies,
+                 "nacelles": self._nacelle_drag(V, rho, mu, mach, thrust), "fins": D_fin, "folded": D_folded}
+        components = sum(terms.values())
+        terms["leakage"] = cfg.leakage_protuberance_fraction * components
+        # Eq. B3: the cooling air's momentum deficit (mdo.wing.buildup, CP_AIR)
+        terms["cooling"] = 0.0 if heat_W is None else \
+            cfg.cooling_momentum_loss * V * heat_W / (CP_AIR * cfg.cooling_delta_T_K)
+        D_parasite = components + terms["leakage"] + terms["cooling"]
+        return {"pd": pd, "L_stall": L_stall, "D_folded": D_folded, "D_parasite": D_parasite, "terms": terms}
+
+    def _nacelle_drag(self, V, rho, mu, mach, thrust=None):
+        """Nacelle drag (N, 1 x K): Raymer's build-up ``q_s Cf(Re_s) FF Q S_wet`` at the
+        slipstream's dynamic pressure.  Actuator disk (far wake): ``q_s = q + T/A`` for a
+        rotor of thrust T and disk area A; where the rotor windmills (T < 0) the wake is
+        slower than the freestream, floored smoothly at ``q/4`` (half the speed; width
+        ``0.02 q + 1`` Pa).  In hover ``q_s = T/A`` is the download of the nacelle in the
+        downwash.  Without ``thrust`` (or ``drag.nacelles_in_slipstream`` off): freestream."""
+        q = 0.5 * rho * V * V
+        D = 0.0
+        for name, b in self.nacelles.items():
+            gm = next(g for g in self.groups if g.name == name)
+            if thrust is None or not self.config.drag.nacelles_in_slipstream:
+                qs = q
+            else:
+                qs = smooth_max(q + thrust[name] / (math.pi * gm.design["R"] ** 2), 0.25 * q, 0.02 * q + 1.0)
+            D = D + body_drag([b], ca.sqrt(2.0 * qs / rho), rho, mu, mach)[0]
+        return D
 
     def _flap_upwash(self, nodes, v_cp, V):
         """Deflected flaps as an incidence increment of the flapped strips in the flow

@@ -69,6 +69,17 @@ def operating_limits(ac, nodes, rot, po, aero, env) -> list:
     return out
 
 
+DRAG_TERM_DOC = {
+    "profile": "section profile drag of every lattice strip (local q and Re; post-stall strips)",
+    "fuselage": "fuselage skin friction x form factor (Raymer build-up)",
+    "nacelles": "nacelles at their slipstream's dynamic pressure (Raymer build-up)",
+    "fins": "fins: skin friction x form factor x wetted area",
+    "folded": "stopped/folded rotors' drag area",
+    "leakage": "leakage and protuberances (fraction of the component drag, Raymer 12.5.9)",
+    "cooling": "cooling air of the motors and inverters (momentum deficit, Eq. B3)",
+}
+
+
 def node_outputs(ac, nodes, rot, aero, po, env) -> dict:
     """The per-node outputs (``mission.csv`` columns), whole-aircraft then per rotor group."""
     V, alpha = env["V"], env["alpha"]
@@ -86,6 +97,10 @@ def node_outputs(ac, nodes, rot, aero, po, env) -> dict:
         "induced_drag_N": Output(aero["D_i"], "N"), "parasite_drag_N": Output(aero["D_parasite"], "N"),
         "drag_device_drag_N": Output(aero["D_device"], "N", "gear/flap drag deployed on approach (in parasite)"),
         "drag_device_deployment": Output(aero["deploy"], "-", "fraction of the segment's drag_device_area_m2"),
+        "CDp": Output(aero["D_parasite"] / (q * ac.S_ref + 1e-9), "-",
+                      "parasite drag coefficient on S_ref (the build-up's terms, drag device included)"),
+        **{f"drag_{name}_N": Output(term * _row(1.0, env["K"]), "N", DRAG_TERM_DOC[name])
+           for name, term in aero["drag_terms"].items()},
         "swirl_recovered_power_W": Output(aero["swirl_recovered_W"], "W",
                                           "near-field thrust power of the wing in the slipstreams' swirl"),
         "swirl_available_power_W": Output(aero["swirl_available_W"], "W",
@@ -114,6 +129,8 @@ def node_outputs(ac, nodes, rot, aero, po, env) -> dict:
                "motor_power_fraction": Output(o["Q"] * o["omega"] / gm.design["P_rated"], "-",
                                               "shaft power / continuous rating"),
                "throttle": Output(mo["throttle"], "-"), "motor_efficiency": Output(eff, "-"),
+               "drive_efficiency": Output(o["Q"] * o["omega"] / (mo["esc_power_in_W"] + 1e-9), "-",
+                                          "shaft power / bus power of one motor with its inverter (or ESC)"),
                "induced_axial_velocity_mps": Output(o["bemt"]["va_mean_mps"], "m/s",
                                                     "mean axial induced velocity at the disk (wake pitch)")}
         for k, v in per.items():

@@ -40,6 +40,23 @@ __all__ = ["ga2p", "ga8p", "ttw", "VEHICLES", "design_rpm_for_tip_mach", "GA_APP
 
 GA_SECTIONS = (0.0, 0.25, 0.5, 0.75, 1.0)
 
+# Sections with the boundary layer tripped at 10 % chord on both surfaces (NeuralFoil on
+# the sections' own coordinates, mdo.airfoil.generate; shipped in mdo/airfoil/data/generated).
+# Why not the free-transition XFOIL polars: a riveted metal production wing keeps little
+# laminar flow (Raymer, Aircraft Design 6th ed., sec. 12.5.3: laminar runs of 50 % need
+# smooth composite skins), and the 63-412's laminar bucket (cd 0.0041 at cl 0.3, Re 6e6)
+# is half the 0.0084 of a turbulent flat plate with its form factor; tripped at 10 % it is
+# 0.0075, the figure Raymer's build-up gives with 10 % laminar run (mdo.wing.buildup).
+# The TTW's wings sit wholly in the rotors' slipstreams, whose turbulence moves transition
+# to the leading edge (Catalano, "Effects of a pusher propeller on boundary layer transition",
+# ICAS 2004; Howard & Miley, J. Aircraft 26(3), 1989), so they get the same section.
+# Full-scale propeller blades (Re 1-3e6 at 0.75 R, erosion and insects at the leading edge)
+# fly tripped sections too (issue 17 item 5).
+TRIPPED = "@xtr=0.1"
+GA_WING_AIRFOIL = "NACA_63_412" + TRIPPED
+TAIL_AIRFOIL = "NACA_0015" + TRIPPED
+PROP_AIRFOIL = "NACA_4412" + TRIPPED
+
 # Mass calibration (see mass.py): one factor on all structure, systems and propulsion
 # hardware terms (not battery, not payload).  1.16 brings the GA-2P build-up to Table 1's
 # 3549 lb (the raw regressions give 3250 lb); the same factor then *predicts* GA-8P's
@@ -90,14 +107,14 @@ def design_rpm_for_tip_mach(radius_m, speed_mps, altitude_m, tip_mach=0.6) -> fl
 
 def _ga_airframe():
     main = WingConfig("main_wing", span_m=11.4, area_m2=14.76, taper=0.70, section_eta=GA_SECTIONS,
-                      twist_deg=(3.00, 2.75, 2.50, 2.25, 2.00), airfoil="NACA_63_412", role="main",
+                      twist_deg=(3.00, 2.75, 2.50, 2.25, 2.00), airfoil=GA_WING_AIRFOIL, role="main",
                       flap_span_eta=GA_FLAP_SPAN_ETA, flap_clmax_increment=GA_FLAP_CLMAX_INCREMENT,
                       thickness_to_chord=0.12, root_le_x_m=2.93, root_z_m=1.01)
     htail = WingConfig("horizontal_tail", span_m=3.3, area_m2=2.54, taper=1.0, section_eta=(0.0, 1.0),
-                       twist_deg=(0.0, 0.0), airfoil="NACA_0015", thickness_to_chord=0.12,
+                       twist_deg=(0.0, 0.0), airfoil=TAIL_AIRFOIL, thickness_to_chord=0.12,
                        root_le_x_m=7.7, root_z_m=0.25, role="horizontal_tail")
     vtail = WingConfig("vertical_tail", span_m=1.854, area_m2=2.258, taper=0.6858 / 1.6764,
-                       section_eta=(0.0, 1.0), twist_deg=(0.0, 0.0), airfoil="NACA_0015",
+                       section_eta=(0.0, 1.0), twist_deg=(0.0, 0.0), airfoil=TAIL_AIRFOIL,
                        thickness_to_chord=0.12, sweep_quarter_chord_deg=25.0, root_le_x_m=6.75,
                        root_z_m=0.623, role="fin")
     fuselage = FuselageConfig(length_m=8.28, width_m=42 * u.INCH, height_m=62 * u.INCH,
@@ -112,7 +129,7 @@ def ga2p(rotation: str = "inboard_up") -> VehicleConfig:
         "propellers", wings=("main_wing",), span_eta=(0.23,), blades=3, radius_m=0.97,
         design_thrust_N=900.0, design_speed_mps=135 * u.MPH, design_cl=0.7,
         design_rpm=round(design_rpm_for_tip_mach(1.12, 119.04 * u.MPH, 2500 * u.FT)),
-        design_altitude_m=2500 * u.FT, motor=MotorConfig(52.7e3, **GA_MOTOR), airfoil="NACA_4412",
+        design_altitude_m=2500 * u.FT, motor=MotorConfig(52.7e3, **GA_MOTOR), airfoil=PROP_AIRFOIL,
         x_ahead_of_le_m=0.93, z_below_wing_m=0.226, rotation=rotation, nacelle_wetted_area_m2=4.5)
     return VehicleConfig(
         "GA-2P", "airplane", wings=(main, htail, vtail), rotor_groups=(props,), fuselage=fus,
@@ -130,7 +147,7 @@ def ga8p(rotation: str = "inboard_up") -> VehicleConfig:
         "propellers", wings=("main_wing",), span_eta=(0.25, 0.5, 0.75, 1.0), blades=5, radius_m=0.58,
         design_thrust_N=350.0, design_speed_mps=130 * u.MPH, design_cl=0.7,
         design_rpm=round(design_rpm_for_tip_mach(0.55, 138.58 * u.MPH, 2500 * u.FT)),
-        design_altitude_m=2500 * u.FT, motor=MotorConfig(25.19e3, **GA_MOTOR), airfoil="NACA_4412",
+        design_altitude_m=2500 * u.FT, motor=MotorConfig(25.19e3, **GA_MOTOR), airfoil=PROP_AIRFOIL,
         x_ahead_of_le_m=0.56, z_below_wing_m=0.0, rotation=rotation, nacelle_wetted_area_m2=1.2)
     return VehicleConfig(
         "GA-8P", "airplane", wings=(main, htail, vtail), rotor_groups=(props,), fuselage=fus,
@@ -144,19 +161,19 @@ def ttw(rotation: str = "inboard_up") -> VehicleConfig:
     """TTW: tandem tilt-wing eVTOL with eight 3-bladed rotors on two tilting wings."""
     sections = GA_SECTIONS
     tandem = WingConfig("tandem_wing", span_m=9.6, area_m2=10.85, taper=1.0, section_eta=sections,
-                        twist_deg=(4.0, 3.0, 2.0, 1.0, 0.0), airfoil="NACA_63_412",
+                        twist_deg=(4.0, 3.0, 2.0, 1.0, 0.0), airfoil=GA_WING_AIRFOIL,
                         thickness_to_chord=0.12, root_le_x_m=0.6, root_z_m=0.4, tilting=True, role="tandem")
     main = WingConfig("main_wing", span_m=9.6, area_m2=10.85, taper=1.0, section_eta=sections,
-                      twist_deg=(4.0, 3.0, 2.0, 1.0, 0.0), airfoil="NACA_63_412",
+                      twist_deg=(4.0, 3.0, 2.0, 1.0, 0.0), airfoil=GA_WING_AIRFOIL,
                       thickness_to_chord=0.12, root_le_x_m=4.6, root_z_m=1.6, tilting=True, role="main")
     fin = WingConfig("vertical_tail", span_m=1.2, area_m2=1.2, taper=0.6, section_eta=(0.0, 1.0),
-                     twist_deg=(0.0, 0.0), airfoil="NACA_0015", thickness_to_chord=0.12,
+                     twist_deg=(0.0, 0.0), airfoil=TAIL_AIRFOIL, thickness_to_chord=0.12,
                      sweep_quarter_chord_deg=25.0, root_le_x_m=4.9, root_z_m=1.0, role="fin")
     rotors = RotorGroupConfig(
         "rotors", wings=("main_wing", "tandem_wing"), span_eta=(0.38, 1.0), blades=3, radius_m=1.2,
         design_thrust_N=5395.5, design_speed_mps=22.36 * u.MPH, design_cl=0.7,
         design_rpm=round(design_rpm_for_tip_mach(1.38, 18.253 * u.MPH, 0.0)),
-        design_altitude_m=0.0, motor=MotorConfig(100e3, **TTW_MOTOR), airfoil="NACA_4412",
+        design_altitude_m=0.0, motor=MotorConfig(100e3, **TTW_MOTOR), airfoil=PROP_AIRFOIL,
         x_ahead_of_le_m=0.6, z_below_wing_m=0.0, rotation=rotation, nacelle_wetted_area_m2=1.5,
         # variable-pitch rotors: Table 5 commands -5 to +20 deg; the stops are our choice, wide
         # enough for hover-to-cruise blade angles (issue 17) and reported when a node reaches them

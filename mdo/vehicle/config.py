@@ -24,7 +24,7 @@ import numpy as np
 from ..core.errors import InputError, check_positive, check_range
 
 __all__ = ["WingConfig", "RotorGroupConfig", "MotorConfig", "FuselageConfig", "BatteryConfig",
-           "VehicleConfig", "replace", "WING_ROLES", "LIFTING_ROLES"]
+           "AirframeDragConfig", "VehicleConfig", "replace", "WING_ROLES", "LIFTING_ROLES"]
 
 #: What a wing is for; every discipline reads this, never the wing's name.
 #: ``main`` and ``tandem`` wings carry the lift and are designed (span, taper, twists);
@@ -105,6 +105,9 @@ class WingConfig:
         return 2.0 / 3.0 * self.root_chord_m * (1 + t + t * t) / (1 + t)
 
 
+MOTOR_MODELS = ("pmsm", "dc")
+
+
 @dataclass(frozen=True)
 class MotorConfig:
     """The motors of one rotor group (one per rotor, identical).
@@ -119,9 +122,19 @@ class MotorConfig:
     for at most ``short_time_duration_s`` each (checked against the segment
     durations when the mission is built).  ``max_speed_factor``: the highest speed
     as a multiple of the rated speed (bearings, back-emf).
-    DC motor model: ``mdo.powertrain.motor.size_dc_motor`` (Eq. M6) at
-    ``rated_voltage_fraction`` of the pack's nominal voltage, peak efficiency from
-    ``rated_efficiency`` and ``copper_loss_fraction``.
+    ``model`` (issue 17 item 3):
+
+    * ``"pmsm"`` (default): the loss-model permanent-magnet synchronous motor and its
+      inverter (:mod:`mdo.powertrain.pmsm`: copper I^2 R, iron hysteresis and eddy
+      currents, friction and windage; inverter conduction, switching and fixed losses),
+      sized from the rating with ``peak_efficiency`` at ``peak_load_fraction`` of the
+      rated torque and the inverter's ``inverter_peak_efficiency``.  Aircraft PMSMs
+      peak at 0.95-0.97, aircraft inverters at 0.97-0.99 (sources in ``pmsm.py``).
+    * ``"dc"``: the paper's DC motor (``mdo.powertrain.motor.size_dc_motor``, Eq. M6,
+      ``rated_efficiency`` and ``copper_loss_fraction``) behind an ESC of flat
+      ``esc_efficiency``.
+
+    Both are sized at ``rated_voltage_fraction`` of the pack's nominal voltage.
     """
     rated_power_W: float
     rated_rpm: float | None = None
@@ -134,6 +147,10 @@ class MotorConfig:
     short_time_duration_s: float = 300.0
     max_speed_factor: float = 1.2
     esc_efficiency: float = 0.95
+    model: str = "pmsm"
+    peak_efficiency: float = 0.96
+    peak_load_fraction: float = 0.5
+    inverter_peak_efficiency: float = 0.985
 
     def __post_init__(self):
         check_positive("motor.rated_power_W", self.rated_power_W, "W")
@@ -146,6 +163,29 @@ class MotorConfig:
         check_positive("motor.short_time_duration_s", self.short_time_duration_s, "s")
         check_range("motor.max_speed_factor", self.max_speed_factor, 1.0, 3.0)
         check_range("motor.esc_efficiency", self.esc_efficiency, 0.5, 1.0)
+        if self.model not in MOTOR_MODELS:
+            raise InputError("motor.model", f"one of {', '.join(map(repr, MOTOR_MODELS))}, got {self.model!r}")
+        check_range("motor.peak_efficiency", self.peak_efficiency, 0.80, 0.995)
+        check_range("motor.peak_load_fraction", self.peak_load_fraction, 0.1, 1.0)
+        check_range("motor.inverter_peak_efficiency", self.inverter_peak_efficiency, 0.90, 0.999)
+
+    def drive(self, name: str, count: int, rated_power_W, rated_speed_radps, pack):
+        """The group's motors as a :class:`mdo.powertrain.MotorGroup` sized at this rating
+        (numbers or CasADi expressions) on ``pack``: the one place the motor model is chosen."""
+        from ..powertrain import MotorGroup, size_dc_motor, size_inverter, size_pmsm
+        v_rated = self.rated_voltage_fraction * pack.nominal_voltage_V
+        if self.model == "dc":
+            motor = size_dc_motor(rated_power_W, rated_speed_radps, v_rated, rated_efficiency=self.rated_efficiency,
+                                  copper_loss_fraction=self.copper_loss_fraction)
+            return MotorGroup(name, motor, count, esc_efficiency=self.esc_efficiency)
+        v_bus = float(pack.nominal_voltage_V)
+        motor = size_pmsm(rated_power_W, rated_speed_radps, v_bus, peak_efficiency=self.peak_efficiency,
+                          peak_load_fraction=self.peak_load_fraction, voltage_headroom=self.rated_voltage_fraction,
+                          max_speed_factor=self.max_speed_factor)
+        inverter = size_inverter(rated_power_W / self.peak_efficiency, v_bus,
+                                 peak_efficiency=self.inverter_peak_efficiency,
+                                 voltage_headroom=self.rated_voltage_fraction)
+        return MotorGroup(name, motor, count, inverter=inverter)
 
 
 @dataclass(frozen=True)
@@ -175,6 +215,8 @@ class RotorGroupConfig:
     tip_mach_max: float = 0.6
     folded_drag_area_m2: float = 0.0   # flat-plate area of one stopped/folded rotor (segments that switch it off)
     nacelle_wetted_area_m2: float = 0.0  # wetted area of the nacelle of ONE rotor (drag and mass)
+    # Raymer sec. 12.5.5: a nacelle mounted on the wing 1.5, within one diameter 1.3, farther 1.0
+    nacelle_interference: float = 1.5
     # variable-pitch hub: the collective pitch's stops (deg, added to the blade's twist);
     # None: a fixed-pitch propeller (the segment's pitch_command_rad, 0 by default)
     collective_range_deg: tuple | None = None
@@ -196,6 +238,7 @@ class RotorGroupConfig:
         check_range(f"{self.name}.tip_mach_max", self.tip_mach_max, 0.1, 0.95)
         check_range(f"{self.name}.folded_drag_area_m2", self.folded_drag_area_m2, 0.0, 5.0, "m^2")
         check_range(f"{self.name}.nacelle_wetted_area_m2", self.nacelle_wetted_area_m2, 0.0, 50.0, "m^2")
+        check_range(f"{self.name}.nacelle_interference", self.nacelle_interference, 0.8, 2.0)
         if self.rotation not in ("inboard_up", "outboard_up"):
             raise InputError(f"{self.name}.rotation", "must be 'inboard_up' or 'outboard_up'")
 
@@ -300,6 +343,36 @@ def disks_in_one_plane(group_a: str, x_ahead_a: float, group_b: str, x_ahead_b: 
 
 
 @dataclass(frozen=True)
+class AirframeDragConfig:
+    """What the airframe's parasite drag adds beyond its components (``Aircraft.drag_buildup``).
+
+    The components themselves are read where they are defined: each lifting surface's
+    section polar (its airfoil, with the transition setting in the airfoil name, e.g.
+    ``"NACA_63_412@xtr=0.1"``), the fuselage, each rotor group's nacelles (with their
+    ``nacelle_interference``, scrubbed by the slipstream when ``nacelles_in_slipstream``)
+    and the fins.
+
+    * ``leakage_protuberance_fraction``: leakage and protuberances as a fraction of the
+      component parasite drag; Raymer, *Aircraft Design*, 6th ed., sec. 12.5.9: 5-10 %
+      for propeller aircraft.  Default 0.10, the upper end (riveted sheet metal, slotted
+      flaps with external hinges, antennas).
+    * ``cooling_delta_T_K``, ``cooling_momentum_loss``: the motor and inverter heat is
+      carried off by ram air heated by ``delta_T`` and returned with a fraction of its
+      momentum lost (Eq. B3 of :mod:`mdo.wing.buildup`, Meredith, ARC R&M 1683, 1935);
+      ``cooling_momentum_loss = 0`` switches cooling drag off.
+    """
+    leakage_protuberance_fraction: float = 0.10
+    cooling_delta_T_K: float = 30.0
+    cooling_momentum_loss: float = 0.5
+    nacelles_in_slipstream: bool = True
+
+    def __post_init__(self):
+        check_range("drag.leakage_protuberance_fraction", self.leakage_protuberance_fraction, 0.0, 0.5)
+        check_range("drag.cooling_delta_T_K", self.cooling_delta_T_K, 5.0, 200.0, "K")
+        check_range("drag.cooling_momentum_loss", self.cooling_momentum_loss, 0.0, 1.0)
+
+
+@dataclass(frozen=True)
 class VehicleConfig:
     """A whole aircraft: the single source of truth every discipline reads.
 
@@ -322,6 +395,7 @@ class VehicleConfig:
     cruise_speed_mps: float = 78.232   # 175 mph
     cruise_altitude_m: float = 762.0   # 2500 ft
     togw_reference_kg: float = 0.0     # Table 1 of the paper, for comparison only
+    drag: AirframeDragConfig = field(default_factory=AirframeDragConfig)
     mass_inputs: dict = field(default_factory=dict)
     notes: tuple = ()
 
@@ -340,6 +414,8 @@ class VehicleConfig:
             raise InputError("rotor_groups", "at least one rotor group")
         if not isinstance(self.battery, BatteryConfig):
             raise InputError("battery", f"a BatteryConfig, got {type(self.battery).__name__}")
+        if not isinstance(self.drag, AirframeDragConfig):
+            raise InputError("drag", f"an AirframeDragConfig, got {type(self.drag).__name__}")
         check_positive("cruise_speed_mps", self.cruise_speed_mps, "m/s")
         check_range("cruise_altitude_m", self.cruise_altitude_m, 0.0, 20000.0, "m")
         names = {w.name for w in self.wings}
@@ -405,7 +481,8 @@ class VehicleConfig:
         return sum(g.count for g in self.rotor_groups)
 
     def _motor(self, group: RotorGroupConfig, pack):
-        """A group's DC motor at its configured rating (Eq. M6 at the rated voltage)."""
+        """A group's DC motor at its configured rating (Eq. M6 at the rated voltage): the
+        paper's motor model, which :meth:`powertrain` uses whatever ``motor.model`` says."""
         from ..core import units as u
         from ..powertrain import size_dc_motor
         m = group.motor
@@ -417,16 +494,19 @@ class VehicleConfig:
         """The electrical network with every motor at its configured rating, as numbers
         (``mdo.powertrain.Bus``: this battery's pack, one motor group per rotor group,
         the avionics and payload load)."""
-        from ..powertrain import Bus, MotorGroup
+        from ..core import units as u
+        from ..powertrain import Bus
         pack = self.battery.pack()
-        groups = [MotorGroup(g.name, self._motor(g, pack), g.count, esc_efficiency=g.motor.esc_efficiency)
+        groups = [g.motor.drive(g.name, g.count, g.motor.rated_power_W, g.motor_rated_rpm * u.RPM, pack)
                   for g in self.rotor_groups]
         return Bus(pack, groups, aux_power_W=self.aux_power_W)
 
     def powertrain(self, group: str | None = None):
         """This battery and one rotor group's motors (default the first group) as a
         ``mdo.powertrain.Powertrain``: the single-group network of ``mdo battery report``
-        (efficiency maps, balance over throttle)."""
+        (efficiency maps, balance over throttle).  It flies the paper's DC motor model
+        (Eqs. M1-M6) at this group's rating whatever ``motor.model`` is; the mission's
+        network is :meth:`bus`, which follows ``motor.model``."""
         g = self.rotor_groups[0] if group is None else next(
             (x for x in self.rotor_groups if x.name == group), None)
         if g is None:

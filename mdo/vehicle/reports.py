@@ -234,6 +234,32 @@ def energy_breakdown(vehicle, mission, solution) -> str:
     return "\n".join(lines)
 
 
+def _write_motor_maps(vehicle, mission, solution, design, out: Path) -> None:
+    """``motor_map_<group>.png``: the efficiency map of each group's PMSM + inverter at the
+    solution's rating, with every segment's operating points (rpm, torque per motor)."""
+    from ..powertrain.pmsm import plot_efficiency_map
+    ev = mission.evaluation.outputs
+    for gm in vehicle.groups:
+        if gm.motor.inverter is None:
+            continue
+        g, rd = gm.config, design["rotor_groups"][gm.name]
+        mg = g.motor.drive(g.name, g.count, rd["motor_rated_power_W"], rd["motor_rated_rpm"] * u.RPM, vehicle.pack)
+        rpm = np.asarray(solution.value(ev[f"{g.name}.rotor_speed_rpm"].expr), float).ravel()
+        shaft = np.asarray(solution.value(ev[f"{g.name}.shaft_power_W"].expr), float).ravel() / g.count
+        torque = shaft / np.maximum(rpm * u.RPM, 1e-6)
+        points = {}
+        for sg in mission._segs:
+            k = sg.node0 + sg.n // 2
+            if torque[k] > 0:
+                points[sg.segment.name] = (rpm[k], torque[k])
+        plot_efficiency_map(mg.motor, mg.inverter, out / f"motor_map_{_file_safe(g.name)}.png",
+                            title=f"{vehicle.name} {g.name} {rd['motor_rated_power_W'] / 1e3:.0f} kW", points=points)
+
+
+def _file_safe(name: str) -> str:
+    return "".join(ch if ch.isalnum() or ch in "-_" else "_" for ch in name)
+
+
 def add_vehicle_reports(problem, vehicle, mission):
     """Register the vehicle's reports (mass, loading, blade, design, figures) on ``problem``."""
 
@@ -252,6 +278,7 @@ def add_vehicle_reports(problem, vehicle, mission):
         k = _write_loading(vehicle, mission, solution, out)
         _write_blade(vehicle, solution, out)
         write_geometry(vehicle, mission, solution, out, k)
+        _write_motor_maps(vehicle, mission, solution, design, out)
         from ..plots.checks import write_design_checks
         write_design_checks(out)
 

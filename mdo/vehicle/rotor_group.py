@@ -34,7 +34,7 @@ import casadi as ca
 
 from ..core import units as u
 from ..core.atmosphere import atmosphere
-from ..powertrain import MotorGroup, size_dc_motor
+from ..powertrain import MotorGroup
 from ..rotor import PHI_MAX_RAD, PHI_MIN_RAD, adkins_liebeck, add_adkins_liebeck, bemt_function, section
 from ..rotor.geometry import station_layout
 from .base import ResidualGroup, Unknown
@@ -143,13 +143,11 @@ class RotorGroupModel:
         return d
 
     def motor_group(self, pack) -> MotorGroup:
-        """The group's motors, sized from the (symbolic) rating at the rated speed (Eq. M6)."""
-        m, g = self.config.motor, self.config
+        """The group's motors, sized from the (symbolic) rating at the rated speed
+        (``MotorConfig.drive``: PMSM + inverter, or the DC motor of Eq. M6)."""
+        g = self.config
         self.rated_speed_radps = self.design["omega_rated"]
-        motor = size_dc_motor(self.design["P_rated"], self.rated_speed_radps,
-                              m.rated_voltage_fraction * pack.nominal_voltage_V, rated_efficiency=m.rated_efficiency,
-                              copper_loss_fraction=m.copper_loss_fraction)
-        self.motor = MotorGroup(g.name, motor, g.count, esc_efficiency=m.esc_efficiency)
+        self.motor = g.motor.drive(g.name, g.count, self.design["P_rated"], self.rated_speed_radps, pack)
         return self.motor
 
     # ------------------------------------------------------------------ nodes

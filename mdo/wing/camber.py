@@ -153,7 +153,7 @@ def camber_line(name: str | None) -> CamberLine:
     """The camber line of section ``name`` (see module doc); ``InputError`` if unknown."""
     if name is None:
         return _flat()
-    key = _key(str(name))
+    key = _key(str(name).split("@", 1)[0])   # the geometry; "@xtr=..." sets transition, not camber
     if key in ("", "flat", "none", "flatplate", "plate"):
         return _flat(key or "flat")
     m4 = re.fullmatch(r"naca(\d)(\d)(\d\d)", key)
