@@ -470,7 +470,7 @@ class Aircraft:
         # gear/flap deployment: a control only where a segment allows a drag device
         out.append(Unknown("drag_device_deployment", unit="-", scale=1.0, lower=0.0, upper=1.0,
                            description="gear/flap deployment on approach (fraction of drag_device_area_m2)",
-                           only_where="drag_device_area_m2"))
+                           only_where="drag_device_area_m2", hold_where_uncollocated=True))
         return out
 
     def states(self):
