@@ -7,7 +7,7 @@ from .core.units import KWH
 from .plots import figure_report
 from .vehicle.reports import add_vehicle_reports
 
-__all__ = ["minimize_battery_energy", "AIRCRAFT_OPTIONS"]
+__all__ = ["minimize_battery_energy", "AIRCRAFT_OPTIONS", "AIRFRAME_OPTIONS", "airframe_variant"]
 
 #: allowed values of the ``-o`` options every whole-mission aircraft problem shares
 #: (``mdo.nlp.options``): a problem file writes ``OPTIONS = {**AIRCRAFT_OPTIONS, ...its own}``
@@ -36,6 +36,37 @@ TRAJECTORY_OPTIONS = {
     "trajectory": (str, "prescribed", "free"),
     "max_block_time_min": (float, 1.0, 1000.0),
 }
+
+
+#: what-if options on the airframe and motor models (problems/ga2p.py, ga8p.py, ttw.py): the
+#: term-by-term reconciliation with the paper's assumptions (results/table3_reconciliation.md)
+AIRFRAME_OPTIONS = {
+    "motor_model": (str, "pmsm", "dc"),
+    "sections": (str, "as_defined", "free_transition"),
+    "leakage_fraction": (float, 0.0, 0.5),
+    "nacelle_slipstream": (bool,),
+    "cooling_drag": (bool,),
+}
+
+
+def airframe_variant(cfg, motor_model: str = "pmsm", sections: str = "as_defined", leakage_fraction=None,
+                     nacelle_slipstream: bool = True, cooling_drag: bool = True):
+    """``cfg`` with the what-ifs of ``AIRFRAME_OPTIONS``: every motor group's ``model``;
+    ``sections="free_transition"`` drops the transition setting of every wing's and rotor's
+    airfoil (``"NACA_63_412@xtr=0.1"`` -> the free-transition XFOIL polar ``"NACA_63_412"``);
+    the leakage fraction, nacelles in the slipstream, cooling drag on/off
+    (``VehicleConfig.drag``).  The defaults return ``cfg``'s own models."""
+    from dataclasses import replace
+    free = sections == "free_transition"
+    strip = (lambda name: name.split("@", 1)[0]) if free else (lambda name: name)
+    groups = tuple(replace(g, airfoil=strip(g.airfoil), motor=replace(g.motor, model=motor_model))
+                   for g in cfg.rotor_groups)
+    wings = tuple(replace(w, airfoil=strip(w.airfoil)) for w in cfg.wings)
+    d = cfg.drag
+    drag = replace(d, leakage_protuberance_fraction=d.leakage_protuberance_fraction if leakage_fraction is None
+                   else float(leakage_fraction), nacelles_in_slipstream=bool(nacelle_slipstream),
+                   cooling_momentum_loss=d.cooling_momentum_loss if cooling_drag else 0.0)
+    return replace(cfg, rotor_groups=groups, wings=wings, drag=drag)
 
 
 def trajectory_envelope(max_block_time_min=None):

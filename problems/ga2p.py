@@ -26,19 +26,23 @@ without battery charging the clean airframe cannot slow down on the base leg), `
 duration are controls within the envelope of ``mdo.mission.trajectory``, the altitudes and the
 trip's ground distance kept), ``max_block_time_min`` (none; with a free trajectory, the mission
 duration limit).
+``motor_model`` ("pmsm", or "dc": the paper's DC motor behind a 0.95 ESC), ``sections``
+("as_defined": the catalog's tripped sections; "free_transition": the XFOIL polars), ``leakage_fraction``
+(0.10), ``nacelle_slipstream`` (true), ``cooling_drag`` (true): what-ifs on the airframe and
+motor models (``mdo.studies.airframe_variant``; results/table3_reconciliation.md).
 """
 from dataclasses import replace
 
 from mdo.core.units import FT, MPH, NMI
 from mdo.mission.profiles import ga_mission
 from mdo.nlp import Problem
-from mdo.studies import AIRCRAFT_OPTIONS, TRAJECTORY_OPTIONS, minimize_battery_energy, trajectory_envelope
+from mdo.studies import AIRCRAFT_OPTIONS, AIRFRAME_OPTIONS, airframe_variant, TRAJECTORY_OPTIONS, minimize_battery_energy, trajectory_envelope
 from mdo.vehicle.aircraft import Aircraft
 from mdo.vehicle.catalog import ga2p
 
 
 # allowed values of the -o options (mdo.nlp.options; `mdo run problems/ga2p.py --options`)
-OPTIONS = {**AIRCRAFT_OPTIONS, **TRAJECTORY_OPTIONS,
+OPTIONS = {**AIRCRAFT_OPTIONS, **AIRFRAME_OPTIONS, **TRAJECTORY_OPTIONS,
     "max_span_m": (float, 5.0, 30.0),
     "approach_drag_area_m2": (float, 0.0, 2.0),
 }
@@ -51,11 +55,14 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
           coupling: str = "swirl", swirl_recovery: str = "bounded", limits: bool = True,
           tip_mach_limit: str = "nodes", allow_regeneration: bool = False, max_span_m: float | None = None,
           approach_drag_area_m2: float = 0.40, wake_samples: int = 5, trajectory: str = "prescribed",
-          max_block_time_min: float | None = None):
+          max_block_time_min: float | None = None,
+          motor_model: str = "pmsm", sections: str = "as_defined", leakage_fraction: float | None = None,
+          nacelle_slipstream: bool = True, cooling_drag: bool = True):
     p = Problem("ga2p", "GA-2P whole-mission optimization (Clarke et al. Eq. 7)")
     cfg = ga2p(rotation)
     cfg = replace(cfg, battery=replace(cfg.battery, cells_series=cells_series, cells_parallel=cells_parallel),
                   cruise_speed_mps=cruise_speed_mph * MPH, cruise_altitude_m=cruise_altitude_ft * FT)
+    cfg = airframe_variant(cfg, motor_model, sections, leakage_fraction, nacelle_slipstream, cooling_drag)
     vehicle = Aircraft(cfg, n_stations=n_stations, wing_strips=wing_strips, mass_model=mass_model,
                        coupling=coupling, swirl_recovery=swirl_recovery, limits=limits,
                        tip_mach_limit=tip_mach_limit, allow_regeneration=allow_regeneration, max_span_m=max_span_m,

@@ -45,19 +45,23 @@ segments only), ``wing_strips`` (16 per wing), ``mass_model``, ``rotation``, ``c
 dual infeasibility stalls at a noise floor of 1e-5 to 3e-4 while the objective holds
 its first 9 digits and the barrier parameter is at its floor, 1e-11 — with 1e-6 IPOPT
 ends "Solved To Acceptable Level" at the same point after some 30 iterations at that floor).
+``motor_model`` ("pmsm", or "dc": the paper's DC motor behind a 0.95 ESC), ``sections``
+("as_defined": the catalog's tripped sections; "free_transition": the XFOIL polars), ``leakage_fraction``
+(0.10), ``nacelle_slipstream`` (true), ``cooling_drag`` (true): what-ifs on the airframe and
+motor models (``mdo.studies.airframe_variant``; results/table3_reconciliation.md).
 """
 from dataclasses import replace
 
 from mdo.core.units import FT, MPH, NMI
 from mdo.mission.profiles import evtol_mission
 from mdo.nlp import Problem
-from mdo.studies import AIRCRAFT_OPTIONS, minimize_battery_energy
+from mdo.studies import AIRCRAFT_OPTIONS, AIRFRAME_OPTIONS, airframe_variant, minimize_battery_energy
 from mdo.vehicle.aircraft import Aircraft
 from mdo.vehicle.catalog import ttw
 
 
 # allowed values of the -o options (mdo.nlp.options; `mdo run problems/ttw.py --options`)
-OPTIONS = {**AIRCRAFT_OPTIONS,
+OPTIONS = {**AIRCRAFT_OPTIONS, **AIRFRAME_OPTIONS,
     "max_cell_current_A": (float, 1.0, 60.0),
     "max_charge_current_A": (float, 0.1, 20.0),
     "n_azimuth": (int, 1, 12),
@@ -97,13 +101,16 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
           n_stations: int = 16, n_azimuth: int = 4, wing_strips: int = 16, mass_model: str = "buildup",
           rotation: str = "inboard_up", coupling: str = "swirl", swirl_recovery: str = "bounded",
           limits: bool = True, tip_mach_limit: str = "nodes", allow_regeneration: bool = True,
-          wake_samples: int = 5, tol: float = 1e-4, pitch: str = "control"):
+          wake_samples: int = 5, tol: float = 1e-4, pitch: str = "control",
+          motor_model: str = "pmsm", sections: str = "as_defined", leakage_fraction: float | None = None,
+          nacelle_slipstream: bool = True, cooling_drag: bool = True):
     p = Problem("ttw", "TTW tandem tilt-wing whole-mission optimization (Clarke et al. Eq. 7)")
     cfg = ttw(rotation)
     cfg = replace(cfg, battery=replace(cfg.battery, cells_series=cells_series, cells_parallel=cells_parallel,
                                                  max_cell_current_A=max_cell_current_A,
                                                  max_charge_current_A=max_charge_current_A),
                   cruise_speed_mps=cruise_speed_mph * MPH, cruise_altitude_m=cruise_altitude_ft * FT)
+    cfg = airframe_variant(cfg, motor_model, sections, leakage_fraction, nacelle_slipstream, cooling_drag)
     vehicle = Aircraft(cfg, n_stations=n_stations, n_azimuth=n_azimuth, wing_strips=wing_strips,
                        mass_model=mass_model, coupling=coupling, swirl_recovery=swirl_recovery, limits=limits,
                        tip_mach_limit=tip_mach_limit, allow_regeneration=allow_regeneration,

@@ -1,0 +1,106 @@
+"""Term-by-term reconciliation of our GA baselines with the paper's (issue 17 item 7).
+
+    python problems/reconcile.py [ga2p ga8p]
+
+Flies each GA aircraft's baseline (``mdo run problems/<p>.py --analysis``: Table 3's
+initial design frozen, the motors sized) with our models, then undoes one of our modelling
+choices at a time, cumulatively, towards the assumptions of the paper's SUAVE model:
+the DC motor behind a flat 0.95 ESC, the free-transition XFOIL section polars, the old
+parasite-drag allowances (5 % leakage, nacelles in the freestream, no cooling drag), no
+operating limits with the swirl credit unbounded and no approach drag device, and a fixed
+gross weight.  Each step is a run folder (pruned to its summary, energy breakdown and
+mission table) under ``results/reconciliation/<p>/``; the table with each step's energy,
+its change and the cruise figures is written to ``results/table3_reconciliation.md``.
+Not a problem file (no ``build``): a study over ``mdo run`` commands.
+"""
+from __future__ import annotations
+
+import csv
+import json
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+OUT = ROOT / "results" / "reconciliation"
+KEEP = {"summary.json", "summary.md", "energy.md", "mission.csv", "mission_segments.csv"}
+
+# (folder, what is undone at this step, the -o options of the step, cumulative)
+STEPS = [
+    ("0_ours", "ours: tripped sections, drag build-up, PMSM + inverter, every limit", {}),
+    ("1_dc_motor", "the paper's DC motor behind a 0.95 ESC", {"motor_model": "dc"}),
+    ("2_free_transition", "free-transition XFOIL polars (wing, tail, propeller)", {"sections": "free_transition"}),
+    ("3_old_allowances", "5 % leakage, nacelles in the freestream, no cooling drag",
+     {"leakage_fraction": 0.05, "nacelle_slipstream": False, "cooling_drag": False}),
+    ("4_no_limits", "no operating limits, unbounded swirl credit, no approach drag device",
+     {"limits": False, "swirl_recovery": "unbounded", "approach_drag_area_m2": 0.0}),
+    ("5_fixed_weight", "fixed gross weight (Table 1)", {"mass_model": "fixed"}),
+]
+PAPER_BASELINE_KWH = {"ga2p": 61.01, "ga8p": 40.51}     # Clarke et al., Table 3
+NAMES = {"ga2p": "GA-2P", "ga8p": "GA-8P"}
+
+
+def _opts(step_index):
+    merged = {}
+    for _, _, o in STEPS[:step_index + 1]:
+        merged.update(o)
+    out = []
+    for k, v in merged.items():
+        out += ["-o", f"{k}={str(v).lower() if isinstance(v, bool) else v}"]
+    return out
+
+
+def run(problem):
+    for i, (folder, _, _) in enumerate(STEPS):
+        dest = OUT / problem / folder
+        cmd = [sys.executable, "-m", "mdo.cli", "run", f"problems/{problem}.py", "--analysis", "--quiet",
+               "--out", str(dest), "--force", *_opts(i)]
+        print(" ".join(cmd[2:]), flush=True)
+        r = subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True)
+        if r.returncode not in (0, 1):
+            print(r.stderr[-2000:], file=sys.stderr)
+        for f in dest.iterdir():
+            if f.name not in KEEP:
+                shutil.rmtree(f) if f.is_dir() else f.unlink()
+        (dest / "command.txt").write_text("mdo " + " ".join(cmd[3:]) + "\n")
+
+
+def _cruise(folder):
+    rows = [r for r in csv.DictReader((folder / "mission.csv").open()) if r["segment"] == "CR"]
+    mean = lambda k: sum(float(r[k]) for r in rows) / len(rows)  # noqa: E731
+    return {"CDp": mean("CDp"), "LD": mean("CL") / mean("CD"), "eta_p": mean("propulsive_efficiency"),
+            "eta_d": mean("propellers.drive_efficiency")}
+
+
+def table(problems):
+    lines = ["# Reconciliation of the GA baselines with the paper's assumptions (issue 17 item 7)", "",
+             "`python problems/reconcile.py`: each aircraft's baseline analysis (Table 3's initial design "
+             "frozen, the motors sized with the mission), then one of our modelling choices undone at a time, "
+             "cumulatively (the options of each step are in its folder's `command.txt`).  Cruise figures "
+             "are the means over the CR nodes.", ""]
+    for p in problems:
+        lines += [f"## {NAMES[p]} (paper's baseline: {PAPER_BASELINE_KWH[p]:.2f} kWh)", "",
+                  "| step | undone | status | energy (kWh) | change (kWh) | TOGW (kg) | cruise CD0 | cruise L/D "
+                  "| cruise prop. eff. | cruise motor + inverter/ESC eff. |",
+                  "|---|---|---|---:|---:|---:|---:|---:|---:|---:|"]
+        prev = None
+        for folder, what, _ in STEPS:
+            d = OUT / p / folder
+            s = json.loads((d / "summary.json").read_text())
+            e = s["objective"]["value"]
+            c = _cruise(d)
+            change = "" if prev is None else f"{e - prev:+.2f}"
+            lines.append(f"| {folder} | {what} | {s['status']} | {e:.2f} | {change} | {s.get('togw_kg', 0):.0f} "
+                         f"| {c['CDp']:.4f} | {c['LD']:.1f} | {c['eta_p']:.3f} | {c['eta_d']:.3f} |")
+            prev = e
+        lines.append("")
+    (ROOT / "results" / "table3_reconciliation.md").write_text("\n".join(lines))
+
+
+if __name__ == "__main__":
+    problems = sys.argv[1:] or ["ga2p", "ga8p"]
+    if "--table" not in problems:
+        for p in problems:
+            run(p)
+    table([p for p in problems if p != "--table"])
