@@ -134,3 +134,15 @@ def test_the_flying_aircraft_agrees_with_the_standalone_build_up(climb_cruise):
     q = 0.5 * rho * V * V
     aircraft = row("CDp")[k] - row("drag_cooling_N")[k] / (q * main.area_m2)
     assert float(out["CD0"]) < aircraft < 1.10 * float(out["CD0"])   # measured: +8.6 %
+
+
+def test_the_what_if_variant_changes_only_what_it_names():
+    from mdo.studies import airframe_variant
+    cfg = ga2p()
+    assert airframe_variant(cfg) == cfg
+    v = airframe_variant(cfg, motor_model="dc", sections="free_transition", leakage_fraction=0.05,
+                         nacelle_slipstream=False, cooling_drag=False)
+    assert [w.airfoil for w in v.wings] == ["NACA_63_412", "NACA_0015", "NACA_0015"]
+    assert v.rotor_groups[0].airfoil == "NACA_4412" and v.rotor_groups[0].motor.model == "dc"
+    assert v.drag == AirframeDragConfig(0.05, cooling_momentum_loss=0.0, nacelles_in_slipstream=False)
+    assert replace(v, wings=cfg.wings, rotor_groups=cfg.rotor_groups, drag=cfg.drag) == cfg
