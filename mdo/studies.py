@@ -46,16 +46,19 @@ AIRFRAME_OPTIONS = {
     "leakage_fraction": (float, 0.0, 0.5),
     "nacelle_slipstream": (bool,),
     "cooling_drag": (bool,),
+    "airframe_calibration": (float, 0.5, 1.5),
 }
 
 
 def airframe_variant(cfg, motor_model: str = "pmsm", sections: str = "as_defined", leakage_fraction=None,
-                     nacelle_slipstream: bool = True, cooling_drag: bool = True):
+                     nacelle_slipstream: bool = True, cooling_drag: bool = True, airframe_calibration=None):
     """``cfg`` with the what-ifs of ``AIRFRAME_OPTIONS``: every motor group's ``model``;
     ``sections="free_transition"`` drops the transition setting of every wing's and rotor's
     airfoil (``"NACA_63_412@xtr=0.1"`` -> the free-transition XFOIL polar ``"NACA_63_412"``);
     the leakage fraction, nacelles in the slipstream, cooling drag on/off
-    (``VehicleConfig.drag``).  The defaults return ``cfg``'s own models."""
+    (``VehicleConfig.drag``); ``airframe_calibration`` replaces the mass build-up's one factor
+    on the non-battery terms (``mass_inputs``; 1.0: the raw regressions).  The defaults
+    return ``cfg``'s own models."""
     from dataclasses import replace
     free = sections == "free_transition"
     strip = (lambda name: name.split("@", 1)[0]) if free else (lambda name: name)
@@ -66,7 +69,9 @@ def airframe_variant(cfg, motor_model: str = "pmsm", sections: str = "as_defined
     drag = replace(d, leakage_protuberance_fraction=d.leakage_protuberance_fraction if leakage_fraction is None
                    else float(leakage_fraction), nacelles_in_slipstream=bool(nacelle_slipstream),
                    cooling_momentum_loss=d.cooling_momentum_loss if cooling_drag else 0.0)
-    return replace(cfg, rotor_groups=groups, wings=wings, drag=drag)
+    mass_inputs = cfg.mass_inputs if airframe_calibration is None else \
+        {**cfg.mass_inputs, "airframe_calibration": float(airframe_calibration)}
+    return replace(cfg, rotor_groups=groups, wings=wings, drag=drag, mass_inputs=mass_inputs)
 
 
 def trajectory_envelope(max_block_time_min=None):

@@ -22,6 +22,8 @@ import subprocess
 import sys
 from pathlib import Path
 
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+
 ROOT = Path(__file__).resolve().parents[1]
 OUT = ROOT / "results" / "reconciliation"
 KEEP = {"summary.json", "summary.md", "energy.md", "mission.csv", "mission_segments.csv"}
@@ -37,6 +39,9 @@ STEPS = [
      {"limits": False, "swirl_recovery": "unbounded", "approach_drag_area_m2": 0.0}),
     ("5_fixed_weight", "fixed gross weight (Table 1)", {"mass_model": "fixed"}),
 ]
+# one-at-a-time from ours (not cumulative): the energy's sensitivity to a calibration
+SENSITIVITY = [("s_calibration_1", "mass calibration 1.0 (the raw regressions) instead of the catalog's",
+                {"airframe_calibration": 1.0}, "airframe_calibration")]
 PAPER_BASELINE_KWH = {"ga2p": 61.01, "ga8p": 40.51}     # Clarke et al., Table 3
 NAMES = {"ga2p": "GA-2P", "ga8p": "GA-8P"}
 
@@ -60,6 +65,17 @@ def run(problem):
         r = subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True)
         if r.returncode not in (0, 1):
             print(r.stderr[-2000:], file=sys.stderr)
+        for f in dest.iterdir():
+            if f.name not in KEEP:
+                shutil.rmtree(f) if f.is_dir() else f.unlink()
+        (dest / "command.txt").write_text("mdo " + " ".join(cmd[3:]) + "\n")
+    for folder, _, opts, _ in SENSITIVITY:
+        dest = OUT / problem / folder
+        extra = [x for k, v in opts.items() for x in ("-o", f"{k}={v}")]
+        cmd = [sys.executable, "-m", "mdo.cli", "run", f"problems/{problem}.py", "--analysis", "--quiet",
+               "--out", str(dest), "--force", *extra]
+        print(" ".join(cmd[2:]), flush=True)
+        subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True)
         for f in dest.iterdir():
             if f.name not in KEEP:
                 shutil.rmtree(f) if f.is_dir() else f.unlink()
@@ -94,8 +110,22 @@ def table(problems):
             lines.append(f"| {folder} | {what} | {s['status']} | {e:.2f} | {change} | {s.get('togw_kg', 0):.0f} "
                          f"| {c['CDp']:.4f} | {c['LD']:.1f} | {c['eta_p']:.3f} | {c['eta_d']:.3f} |")
             prev = e
+        base = json.loads((OUT / p / STEPS[0][0] / "summary.json").read_text())["objective"]["value"]
+        for folder, what, opts, key in SENSITIVITY:
+            s = json.loads((OUT / p / folder / "summary.json").read_text())
+            e = s["objective"]["value"]
+            ours = _catalog_value(p, key)
+            slope = (base - e) / (ours - opts[key])
+            lines += ["", f"Sensitivity ({folder}): {what}: {e:.2f} kWh ({s['status']}, TOGW "
+                          f"{s.get('togw_kg', 0):.0f} kg) against {base:.2f} with {key} = {ours:g}, i.e. "
+                          f"dE/d({key}) = {slope:.1f} kWh per unit."]
         lines.append("")
     (ROOT / "results" / "table3_reconciliation.md").write_text("\n".join(lines))
+
+
+def _catalog_value(problem, key):
+    from mdo.vehicle.catalog import VEHICLES
+    return float(VEHICLES[problem]().mass_inputs[key])
 
 
 if __name__ == "__main__":

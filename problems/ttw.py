@@ -47,7 +47,8 @@ its first 9 digits and the barrier parameter is at its floor, 1e-11 — with 1e-
 ends "Solved To Acceptable Level" at the same point after some 30 iterations at that floor).
 ``motor_model`` ("pmsm", or "dc": the paper's DC motor behind a 0.95 ESC), ``sections``
 ("as_defined": the catalog's tripped sections; "free_transition": the XFOIL polars), ``leakage_fraction``
-(0.10), ``nacelle_slipstream`` (true), ``cooling_drag`` (true): what-ifs on the airframe and
+(0.10), ``nacelle_slipstream`` (true), ``cooling_drag`` (true), ``airframe_calibration`` (the
+catalog's mass calibration; 1.0 = the raw regressions): what-ifs on the airframe and
 motor models (``mdo.studies.airframe_variant``; results/table3_reconciliation.md).
 """
 from dataclasses import replace
@@ -103,14 +104,15 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
           limits: bool = True, tip_mach_limit: str = "nodes", allow_regeneration: bool = True,
           wake_samples: int = 5, tol: float = 1e-4, pitch: str = "control",
           motor_model: str = "pmsm", sections: str = "as_defined", leakage_fraction: float | None = None,
-          nacelle_slipstream: bool = True, cooling_drag: bool = True):
+          nacelle_slipstream: bool = True, cooling_drag: bool = True, airframe_calibration: float | None = None):
     p = Problem("ttw", "TTW tandem tilt-wing whole-mission optimization (Clarke et al. Eq. 7)")
     cfg = ttw(rotation)
     cfg = replace(cfg, battery=replace(cfg.battery, cells_series=cells_series, cells_parallel=cells_parallel,
                                                  max_cell_current_A=max_cell_current_A,
                                                  max_charge_current_A=max_charge_current_A),
                   cruise_speed_mps=cruise_speed_mph * MPH, cruise_altitude_m=cruise_altitude_ft * FT)
-    cfg = airframe_variant(cfg, motor_model, sections, leakage_fraction, nacelle_slipstream, cooling_drag)
+    cfg = airframe_variant(cfg, motor_model, sections, leakage_fraction, nacelle_slipstream, cooling_drag,
+                           airframe_calibration)
     vehicle = Aircraft(cfg, n_stations=n_stations, n_azimuth=n_azimuth, wing_strips=wing_strips,
                        mass_model=mass_model, coupling=coupling, swirl_recovery=swirl_recovery, limits=limits,
                        tip_mach_limit=tip_mach_limit, allow_regeneration=allow_regeneration,
