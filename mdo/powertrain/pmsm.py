@@ -301,10 +301,11 @@ def plot_efficiency_map(motor: PMSM, inverter: Inverter, path, title="PMSM + inv
         for name, (r, t) in (points or {}).items():
             ax.plot(r, t, "s", mfc="none", mec="w", ms=8)
             ax.annotate(name, (r, t), color="w", fontsize=8, xytext=(4, 4), textcoords="offset points")
-        ax.set_title(f"{title}: {lab} efficiency")
+        ax.set_title(f"{lab} efficiency")
         ax.set_xlabel("speed (rpm)")
         ax.legend(loc="lower right", fontsize=8)
     axes[0].set_ylabel("shaft torque (N m)")
+    fig.suptitle(title)
     fig.colorbar(cf, ax=axes, shrink=0.9, label="efficiency")
     fig.savefig(path, dpi=130, bbox_inches="tight")
     plt.close(fig)

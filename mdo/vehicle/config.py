@@ -181,7 +181,7 @@ class MotorConfig:
         v_bus = float(pack.nominal_voltage_V)
         motor = size_pmsm(rated_power_W, rated_speed_radps, v_bus, peak_efficiency=self.peak_efficiency,
                           peak_load_fraction=self.peak_load_fraction, voltage_headroom=self.rated_voltage_fraction,
-                          max_speed_factor=self.max_speed_factor)
+                          max_torque_factor=self.short_time_power_factor, max_speed_factor=self.max_speed_factor)
         inverter = size_inverter(rated_power_W / self.peak_efficiency, v_bus,
                                  peak_efficiency=self.inverter_peak_efficiency,
                                  voltage_headroom=self.rated_voltage_fraction)
