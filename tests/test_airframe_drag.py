@@ -146,3 +146,24 @@ def test_the_what_if_variant_changes_only_what_it_names():
     assert v.rotor_groups[0].airfoil == "NACA_4412" and v.rotor_groups[0].motor.model == "dc"
     assert v.drag == AirframeDragConfig(0.05, cooling_momentum_loss=0.0, nacelles_in_slipstream=False)
     assert replace(v, wings=cfg.wings, rotor_groups=cfg.rotor_groups, drag=cfg.drag) == cfg
+
+
+def test_the_reference_aircrafts_sections_ship_with_the_package(tmp_path, monkeypatch):
+    """A plain install (no NeuralFoil) flies the catalog's tripped sections: their polars
+    are read from mdo/airfoil/data/generated, never generated nor cached."""
+    import mdo.airfoil.generate as gen
+    from mdo.airfoil.generate import SHIPPED_DIR, generate_polars
+    from mdo.vehicle.catalog import VEHICLES
+    monkeypatch.setenv("MDO_AIRFOIL_CACHE", str(tmp_path / "cache"))
+    monkeypatch.setattr(gen, "_neuralfoil_eval", lambda *a, **k: pytest.fail("NeuralFoil called"))
+    names = {w.airfoil for make in VEHICLES.values() for w in make().wings} | \
+            {g.airfoil for make in VEHICLES.values() for g in make().rotor_groups}
+    tripped = sorted(n for n in names if "@" in n)
+    assert tripped, names
+    from mdo.airfoil.airfoil import _GENERATED
+    for name in tripped:
+        _GENERATED.clear()
+        af = Airfoil.from_name(name)
+        paths = generate_polars(af.spec)
+        assert all(SHIPPED_DIR in p.parents for p in paths), (name, paths[0])
+    assert not (tmp_path / "cache").exists()
