@@ -37,7 +37,8 @@ from dataclasses import replace
 from mdo.core.units import FT, MPH, NMI
 from mdo.mission.profiles import ga_mission
 from mdo.nlp import Problem
-from mdo.studies import AIRCRAFT_OPTIONS, AIRFRAME_OPTIONS, airframe_variant, TRAJECTORY_OPTIONS, minimize_battery_energy, trajectory_envelope
+from mdo.studies import (AIRCRAFT_OPTIONS, AIRFRAME_OPTIONS, TRAJECTORY_OPTIONS, airframe_variant,
+                         minimize_battery_energy, trajectory_envelope)
 from mdo.vehicle.aircraft import Aircraft
 from mdo.vehicle.catalog import ga2p
 

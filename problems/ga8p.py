@@ -7,19 +7,15 @@ every node.  The initial design violates the tip-Mach constraint (Table 3's foot
 so ``--analysis`` flies it as given (the limit reported, not enforced) and the
 optimization starts infeasible.
 
-Options (``-o KEY=VALUE``): as ``problems/ga2p.py``.
-``motor_model`` ("pmsm", or "dc": the paper's DC motor behind a 0.95 ESC), ``sections``
-("as_defined": the catalog's tripped sections; "free_transition": the XFOIL polars), ``leakage_fraction``
-(0.10), ``nacelle_slipstream`` (true), ``cooling_drag`` (true), ``airframe_calibration`` (the
-catalog's mass calibration; 1.0 = the raw regressions): what-ifs on the airframe and
-motor models (``mdo.studies.airframe_variant``; results/table3_reconciliation.md).
+Options (``-o KEY=VALUE``): as ``problems/ga2p.py``, the airframe what-ifs included.
 """
 from dataclasses import replace
 
 from mdo.core.units import FT, MPH, NMI
 from mdo.mission.profiles import ga_mission
 from mdo.nlp import Problem
-from mdo.studies import AIRCRAFT_OPTIONS, AIRFRAME_OPTIONS, airframe_variant, TRAJECTORY_OPTIONS, minimize_battery_energy, trajectory_envelope
+from mdo.studies import (AIRCRAFT_OPTIONS, AIRFRAME_OPTIONS, TRAJECTORY_OPTIONS, airframe_variant,
+                         minimize_battery_energy, trajectory_envelope)
 from mdo.vehicle.aircraft import Aircraft
 from mdo.vehicle.catalog import ga8p
 
