@@ -107,20 +107,25 @@ def carpet_plot(sweep_dir, x: str, carpet: str, y: str = "objective", out=None) 
     xi = {v: i for i, v in enumerate(grid[x])}
     cj = {v: j for j, v in enumerate(grid[carpet])}
     fig, ax = plt.subplots(figsize=(6.8, 4.6))
-    def draw(pairs, label, style):
+    def draw(pairs, label, style, at_end):
         pts = [(xi[a] + _STAGGER * cj[c], ok[(a, c)]) for a, c in pairs if (a, c) in ok]
         if pts:
             h, v = zip(*pts)
             ax.plot(h, v, style, marker="o", ms=3)
-            ax.annotate(label, (h[-1], v[-1]), textcoords="offset points", xytext=(4, 2), fontsize=7,
-                        color=style[:2])
+            # blue labels at the lines' ends, orange at their starts: the last of each meet in a corner
+            k, off, ha = (-1, (4, 2), "left") if at_end else (0, (-4, -8), "right")
+            ax.annotate(label, (h[k], v[k]), textcoords="offset points", xytext=off, fontsize=7,
+                        color=style[:2], ha=ha)
 
     for c in grid[carpet]:   # lines of constant KEY2, along KEY
-        draw([(a, c) for a in grid[x]], f"{carpet}={c}", "C0-")
+        draw([(a, c) for a in grid[x]], f"{carpet}={c}", "C0-", True)
     for a in grid[x]:        # lines of constant KEY, along KEY2
-        draw([(a, c) for c in grid[carpet]], f"{x}={a}", "C1-")
+        draw([(a, c) for c in grid[carpet]], f"{x}={a}", "C1-", False)
+    missing = [f"{x}={a}, {carpet}={c}" for a in grid[x] for c in grid[carpet] if (a, c) not in ok]
     ax.set_xticks([])
-    ax.set_xlabel(f"carpet: {x} (orange lines of constant {x}) x {carpet} (blue lines of constant {carpet})")
+    ax.margins(x=0.12)
+    ax.set_xlabel(f"carpet: {x} (orange lines of constant {x})\nx {carpet} (blue lines of constant {carpet})"
+                  + (f"\nnot converged, not drawn: {'; '.join(missing)}" if missing else ""), fontsize=8)
     ax.set_ylabel(_ylabel(rows, y))
     ax.set_title(_title(meta, rows, [r for r in rows if (r.get(x), r.get(carpet)) in ok], y), fontsize=9)
     ax.grid(True, axis="y", alpha=0.3)
