@@ -40,3 +40,19 @@ def test_ipopt_abort_before_the_first_iterate_is_exit_1(tmp_path):
     assert r.returncode == 1, r.stderr
     assert "Invalid_Option" in r.stderr and "Traceback" not in r.stderr
     assert (tmp_path / "run" / "summary.json").exists()
+
+
+def test_a_limiting_inequality_is_named_beside_the_residual():
+    """When the cause is a constraint, not a bound (the aircraft's state-of-charge reserve
+    is one), the report names it: here an energy budget e <= 1 against a need e = 2 x."""
+    from mdo.nlp import Problem
+    p = Problem("budget")
+    x = p.variable("x", lower=1.0, upper=10.0, init=2.0)
+    e = p.variable("e", lower=0.0, upper=100.0, init=1.0)
+    p.constrain("energy need", e - 2.0 * x, kind="==", scale=1.0)
+    p.constrain("energy budget", e, kind="<=", rhs=1.0, scale=1.0, unit="kWh", labels=["end of mission"])
+    p.minimize(e)
+    sol = p.solve(verbose=False, max_iter=100)
+    assert not sol.success
+    report = sol.violation_report()
+    assert "inequality constraints at their limit" in report and "energy budget at end of mission" in report

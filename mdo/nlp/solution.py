@@ -19,7 +19,7 @@ from ..core.units import as_read
 if TYPE_CHECKING:
     from .problem import Problem
 
-__all__ = ["Solution", "write_atomic", "active_limits", "pinned_variables", "element_label",
+__all__ = ["Solution", "write_atomic", "active_limits", "limiting_constraints", "pinned_variables", "element_label",
            "group_values", "group_residual", "ACTIVE_SLACK", "DESIGN_BOUND_FRACTION"]
 
 # an inequality element whose scaled slack is at most this is "active" (IPOPT ends with
@@ -150,6 +150,12 @@ class Solution:
             lines.append("variables pinned at a bound (possible causes, most pushed first):")
             for p in self.pinned:
                 lines.append("  " + describe_pinned(p))
+        limits = limiting_constraints(self)
+        if limits:
+            # a cause that is a constraint, not a bound: the battery's state-of-charge reserve
+            lines.append("inequality constraints at their limit (possible causes, most pushed first):")
+            for c in limits:
+                lines.append(f"  {c['name']} at {c['where']} (multiplier {c['multiplier']:.4g} {c['unit']})")
         return "\n".join(lines)
 
     def to_dict(self) -> dict:
@@ -424,6 +430,22 @@ def active_limits(sol: "Solution") -> list:
                         "multiplier": float(abs(m[i])), "unit": f"{fu} per {c['unit']}",
                         "value": float(lhs[i]), "limit": float(rhs[i]), "design": False})
     return out
+
+
+def limiting_constraints(sol: "Solution", top: int = 4) -> list:
+    """Inequality groups at their limit, one entry per group (its most pushed element),
+    ranked by the push on the scaled problem (|multiplier| x group scale / objective
+    scale): beside the pinned variables, the likely causes of an infeasible solve."""
+    best = {}
+    for a in active_limits(sol):
+        if a["kind"] != "constraint" or not np.isfinite(a["multiplier"]):
+            continue
+        c = next(c for c in sol.constraints if c["name"] == a["name"])
+        push = a["multiplier"] * float(np.max(np.abs(np.asarray(c.get("scale", 1.0), float)))) / sol.objective_scale
+        if push > 1e-6 and push > best.get(a["name"], ({}, -1.0))[1]:
+            best[a["name"]] = (a, push)
+    ranked = sorted(best.values(), key=lambda t: -t[1])
+    return [a for a, _ in ranked[:top]]
 
 
 def pinned_variables(sol: "Solution", top: int = 6) -> list:
