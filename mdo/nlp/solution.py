@@ -100,7 +100,7 @@ class Solution:
         violations = [_worst_violation(c) for c in constraints]
         violations.sort(key=lambda d: -d["scaled"])
         obj = float(np.ravel(val(problem.objective))[0]) if problem.objective is not None else float("nan")
-        timing = {k: float(v) for k, v in stats.items() if k.startswith("t_wall_") or k.startswith("n_call_")}
+        timing = {k: float(v) for k, v in stats.items() if k.startswith(("t_wall_", "t_proc_", "n_call_"))}
         sol = cls(problem.name, status, success, iterations, wall_time_s, obj, problem.objective_unit,
                   problem.objective_name, variables, outputs, violations, history,
                   problem.nlp_size(), timing, analysis=problem.is_analysis)

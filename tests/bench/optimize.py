@@ -1,15 +1,19 @@
-"""Benchmark of the whole-mission optimizations (issue 10): wall time, IPOPT
-iterations, NLP size and where the time goes, per problem.
+"""Benchmark of the whole-mission optimizations (issues 10, 20): wall and CPU time,
+IPOPT iterations, NLP size, where the time goes and peak resident memory, per problem.
 
     python tests/bench/optimize.py [ga2p ga8p ttw] [--repeats N] [--from-baseline]
 
 Each repeat builds the problem, runs the baseline analysis (design frozen) and
 the optimization warm-started from it, exactly as ``mdo run`` does; times are
-medians over the repeats.  Not collected by pytest.
+medians over the repeats.  CPU time is ``time.process_time`` of this process (all
+its threads); peak memory is ``ru_maxrss`` of this process, the high-water mark
+since it started (so with several problems in one call, run one problem per
+call for a per-problem figure).  Not collected by pytest.
 """
 from __future__ import annotations
 
 import argparse
+import resource
 import statistics
 import sys
 import tempfile
@@ -24,7 +28,7 @@ from mdo.nlp import load_problem_file  # noqa: E402
 
 def one(problem: str):
     path = ROOT / "problems" / f"{problem}.py"
-    t0 = time.perf_counter()
+    t0, c0 = time.perf_counter(), time.process_time()
     an = load_problem_file(path, analysis=True)
     t_build_an = time.perf_counter() - t0
     sol_an = an.solve(verbose=False)
@@ -39,7 +43,12 @@ def one(problem: str):
     tm = sol.timing
     fun = sum(tm.get(f"t_wall_nlp_{k}", 0.0) for k in ("f", "g"))
     der = sum(tm.get(f"t_wall_nlp_{k}", 0.0) for k in ("grad_f", "jac_g", "hess_l"))
+    def cpu(stats):
+        return sum(stats.get(f"t_proc_nlp_{k}", 0.0) for k in ("f", "g", "grad_f", "jac_g", "hess_l"))
     return {
+        "total_cpu_s": time.process_time() - c0,
+        "peak_rss_MB": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0,
+        "eval_cpu_s": cpu(tm), "analysis_eval_cpu_s": cpu(sol_an.timing),
         "analysis_status": sol_an.status, "analysis_iterations": sol_an.iterations,
         "analysis_wall_s": sol_an.wall_time_s, "analysis_build_s": t_build_an,
         "status": sol.status, "iterations": sol.iterations, "solve_wall_s": sol.wall_time_s,
@@ -68,7 +77,10 @@ def main():
               f"{r['baseline_energy_kWh']:.3f} kWh")
         print(f"optimization:      {r['status']}, {r['iterations']} iterations, build {med('build_s'):.1f} s, "
               f"solve {med('solve_wall_s'):.1f} s, {r['energy_kWh']:.3f} kWh")
-        print(f"total wall (both stages, builds included): {med('total_wall_s'):.1f} s")
+        print(f"total wall (both stages, builds included): {med('total_wall_s'):.1f} s; "
+              f"CPU {med('total_cpu_s'):.1f} s (function and derivative evaluations "
+              f"{med('analysis_eval_cpu_s'):.1f} s + {med('eval_cpu_s'):.1f} s)")
+        print(f"peak resident memory: {max(r_['peak_rss_MB'] for r_ in runs):.0f} MB")
         print(f"NLP: {r['nlp_variables']} variables, {r.get('nlp_constraints_ipopt', r['nlp_constraints'])} "
               f"constraints, Jacobian nnz {r.get('nlp_jacobian_nnz')}, Hessian nnz {r.get('nlp_hessian_nnz')}")
         print(f"of the {med('solve_wall_s'):.1f} s solve: function evaluations {med('function_eval_s'):.2f} s, "
