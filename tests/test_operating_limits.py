@@ -99,6 +99,25 @@ def test_swirl_credit_never_exceeds_the_swirl_power_there(cfg, coupling):
                   <= 0.03 * avail[~over & (rec < 0.5 * avail)] + 11.0)
 
 
+def test_swirl_available_is_the_annulus_energy_of_the_bemt_swirl():
+    """``swirl_power_W`` = sum 1/2 rho (V + v_a) 2 pi r dr (2 v_t)^2 F over the stations, with
+    F v_t^2 the BEMT's ``vt_msq_F_m2ps2`` (checked against F and v_t in test_rotor_bemt)."""
+    from mdo.rotor import station_layout
+    p, v, m = _problem(ga2p())
+    gm = v.groups[0]
+    n, K = gm.n_stations, 3
+    rng = np.random.default_rng(3)
+    va, msq = rng.uniform(1, 20, (n, K)), rng.uniform(0, 30, (n, K))
+    V, rho = np.array([[40.0, 60.0, 80.0]]), np.array([[1.2, 1.1, 1.0]])
+    got = _initial(p, gm.swirl_power_W({"va_mps": ca.DM(va), "vt_msq_F_m2ps2": ca.DM(msq)},
+                                       ca.DM(V), ca.DM(rho))).ravel()
+    R, h = _initial(p, gm.design["R"]), gm.config.hub_fraction
+    s, ds = station_layout(n)
+    r, dr = R * (h + (1 - h) * s), R * (1 - h) * ds
+    expected = np.sum(0.5 * rho * (V + va) * (2 * np.pi * r * dr)[:, None] * 4 * msq, axis=0)
+    np.testing.assert_allclose(got, expected, rtol=1e-12)
+
+
 def test_limits_violated_when_off_respected_when_on():
     """The frozen GA-2P (motors sized) on a steep climb: without the limits the motor rating
     falls to its lower bound and the motors run far above it; with them every limit holds."""

@@ -46,6 +46,13 @@ def test_solution_satisfies_momentum_and_blade_element():
         np.testing.assert_allclose(dQdr, 4 * math.pi * r ** 3 * RHO * F * (vx + u) * (v / r), rtol=1e-9,
                                    atol=1e-9)
         assert np.isclose(res["thrust_N"][k], np.dot(dTdr, dr))
+        # the annulus-mean square swirl of Prandtl's picture, F v^2 (the slipstream's swirl
+        # energy, Aircraft's bound on the swirl credit): between the uniform annulus of the
+        # same angular momentum, (F v)^2, and the factor-free v^2 it replaced
+        msq = res["vt_msq_F_m2ps2"][:, k]
+        np.testing.assert_allclose(msq, F * v * v, rtol=1e-12, atol=1e-15)
+        assert np.all((F * v) ** 2 <= msq + 1e-15) and np.all(msq <= v * v + 1e-15)
+        assert np.any(msq < 0.5 * v * v)                   # the hub and tip stations, F < 1/2
 
 
 def test_lightly_loaded_rotor_tends_to_actuator_disk():

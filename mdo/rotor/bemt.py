@@ -99,7 +99,7 @@ INPUT_NAMES = (
 
 NLP_OUTPUTS = (
     "residual", "thrust_N", "torque_Nm", "power_W", "hforce_N", "yforce_N",
-    "gamma_m2ps", "va_mps", "vt_mps", "dTdr_Npm", "dQdr_N", "va_mean_mps",
+    "gamma_m2ps", "va_mps", "vt_mps", "dTdr_Npm", "dQdr_N", "va_mean_mps", "vt_msq_F_m2ps2",
 )
 
 FULL_OUTPUTS = NLP_OUTPUTS + (
@@ -255,6 +255,8 @@ def _rotor_totals(x, r, dr, e, ph, n, n_azimuth):
         "hforce_N": H, "yforce_N": Y, "mp_hub_Nm": Mp, "ms_hub_Nm": Ms,
         "gamma_m2ps": avg(ph["gamma"]), "va_mps": va, "vt_mps": avg(ph["v"]),
         "dTdr_Npm": dTdr, "dQdr_N": dQdr, "va_mean_mps": va_mean,
+        # F v^2: the annulus-mean square swirl of Prandtl's sheet picture (swirl_power_W)
+        "vt_msq_F_m2ps2": avg(ph["F"] * ph["v"] * ph["v"]),
     }
 
 
@@ -277,7 +279,9 @@ def bemt_function(sec, n_stations: int = 20, n_azimuth: int = 1, *, outputs: str
         the in-plane flow, H), yforce_N (along n x e_p); gamma_m2ps [n] bound
         circulation, va_mps [n] induced axial, vt_mps [n] induced swirl (in the
         rotation direction), dTdr_Npm [n], dQdr_N [n] (all blades, azimuth
-        averaged); va_mean_mps [1] area-averaged induced axial velocity.
+        averaged); va_mean_mps [1] area-averaged induced axial velocity;
+        vt_msq_F_m2ps2 [n] the azimuth average of F v_t^2 (the Prandtl factor F times
+        the square of the induced swirl at the blade: the annulus-mean square swirl).
     ``outputs="full"`` adds (``FULL_OUTPUTS``) CT, CP, CQ, eta = T Vx/P, FM =
     T^1.5/(P sqrt(2 rho pi R^2)), J = Vx/(n D), hub moments, and per element
     [n x m] alpha, cl, cd, W, Re, Mach, F, u, v and the element dT/dr, dQ/dr.

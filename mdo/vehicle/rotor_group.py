@@ -217,23 +217,32 @@ class RotorGroupModel:
     def swirl_power_W(self, bm, v_ax, rho):
         """Rotational kinetic-energy flux one rotor's slipstream carries, W (1 x K).
 
-        Momentum theory: the swirl behind the disk is twice the induced swirl at the
-        disk, ``2 v_t`` (Glauert), carried by the annulus mass flow ``rho (V + v_a) 2 pi r dr``::
+        Momentum theory with Prandtl's factor F (the BEMT's torque balance,
+        ``dQ = rho (V + v_a) 2 pi r dr * r * 2 F v_t``): the far wake's annulus-mean
+        swirl is ``2 F v_t`` (Glauert's doubling of the induced swirl ``v_t`` at the
+        blade), carried by the annulus mass flow ``rho (V + v_a) 2 pi r dr``.  In
+        Prandtl's picture a fraction F of the annulus moves with the sheets, at
+        ``2 v_t``, the rest with the outer flow, so the mean square swirl is
+        ``F (2 v_t)^2``::
 
-            P_swirl = sum_i 1/2 rho (V + v_a,i) 2 pi r_i dr_i (2 v_t,i)^2
+            P_swirl = sum_i 1/2 rho (V + v_a,i) 2 pi r_i dr_i 4 F_i v_t,i^2
 
-        This is the most power a wing behind the rotor can recover from the swirl.
+        This is the upper end of what the same angular momentum can carry (a uniform
+        annulus, ``(2 F v_t)^2``, is the lower end), so it bounds what a wing behind
+        the rotor can recover.  Without F (before 2026-12-03) the hub and tip stations,
+        where F -> 0 makes v_t large, were credited 1/F times their energy (7x at the
+        TTW rotors' hub, F = 0.15).
         """
         g = self.config
         s, ds = station_layout(self.n_stations)
         R = self.design["R"]
         r = R * (g.hub_fraction + (1.0 - g.hub_fraction) * ca.DM(s))
         dr = R * (1.0 - g.hub_fraction) * ca.DM(ds)
-        va, vt = bm["va_mps"], bm["vt_mps"]
+        va, msq = bm["va_mps"], bm["vt_msq_F_m2ps2"]
         K = va.shape[1]
         w = ca.repmat(2 * np.pi * r * dr, 1, K)
         axial = ca.repmat(v_ax, self.n_stations, 1) + va
-        return ca.sum1(0.5 * ca.repmat(rho, self.n_stations, 1) * axial * w * (2 * vt) ** 2)
+        return ca.sum1(0.5 * ca.repmat(rho, self.n_stations, 1) * axial * w * 4.0 * msq)
 
     # ------------------------------------------------------------------ limits
     def short_time_row(self, nodes) -> np.ndarray:
