@@ -39,8 +39,15 @@ which is Ning's ``sin(phi)/(1 + a) - Vx/Vy cos(phi)/(1 - a')`` multiplied by
 ``(1 - k)(1 + k') Vy / W0``: the same roots, but with no division by ``Vx``, so
 hover (Vx = 0, where the root has k = 1) and descent (Vx < 0) are the same
 formula as climb.  For ``Vx >= 0``, ``Vy > 0`` and a blade that lifts at small
-``phi`` (cn(0+) > 0), ``R(0+) = -inf`` and ``R(pi/2) = Vy (1 + sigma' cd/(4F))/W0
-> 0``: a root lies in (0, pi/2].  The |sin phi| factors carry Ning's sign
+``phi`` (cn(0+) > 0), ``R(0+) = -inf`` and
+
+    R(pi/2) = [Vy (1 + sigma' cd/(4F)) - Vx sigma' cl/(4F)] / W0,
+
+with cl, cd at ``alpha = theta - pi/2``: positive, so a root lies in (0, pi/2], unless
+the section still lifts with its chord turned past the axis, ``cl(theta - pi/2) >
+4 F Vy/(Vx sigma') + cd Vy/Vx``.  That happens at the hub of a steeply twisted blade
+at a large collective in fast axial flow (small Vy/Vx, small hub F): the TTW rotors'
+hub station (blade angle 58 deg) leaves the bracket at a collective near 30 deg.  The |sin phi| factors carry Ning's sign
 conventions into the other quadrants (used only by the analysis fallback); on
 the NLP's bounds phi in [phi_min > 0, pi/2] they equal sin(phi) and the residual is
 smooth.
