@@ -47,8 +47,8 @@ with cl, cd at ``alpha = theta - pi/2``: positive, so a root lies in (0, pi/2], 
 the section still lifts with its chord turned past the axis, ``cl(theta - pi/2) >
 4 F Vy/(Vx sigma') + cd Vy/Vx``.  That happens at the hub of a steeply twisted blade
 at a large collective in fast axial flow (small Vy/Vx, small hub F): the TTW rotors'
-hub station (blade angle 58 deg) leaves the bracket at a collective near 30 deg.  The |sin phi| factors carry Ning's sign
-conventions into the other quadrants (used only by the analysis fallback); on
+hub station (blade angle 58 deg) leaves the bracket at a collective near 30 deg.
+The |sin phi| factors carry Ning's sign conventions into the other quadrants (used only by the analysis fallback); on
 the NLP's bounds phi in [phi_min > 0, pi/2] they equal sin(phi) and the residual is
 smooth.
 
