@@ -35,6 +35,13 @@ Table 1 TTW cannot fly Table 5's profile (measured with this problem's analysis)
 
 The rotors are variable-pitch (hub stops -15/+45 deg): their collective is a control at
 every node (``pitch="control"``, default); ``-o pitch=schedule`` flies Table 5's commands.
+``-o tilt=control`` flies the wing-mounted angle of the transitions (VT, CT1, CT2, AT, DT) as a
+control too, continuous with the hover and wing-borne segments around them and at most
+10 deg/s (``WingConfig.max_tilt_rate_degps``); the default, ``schedule``, flies Table 5's
+WMA.  The body attitude is free in the transitions, and the wing and rotors see body +
+tilt: without a cabin-attitude limit the tilt only moves the cabin.  ``cabin_attitude_deg``
+bounds the body's pitch attitude to +-that many degrees at every node (passenger comfort, a
+choice; default: the mission's -60/+85 deg).
 
 Options (``-o KEY=VALUE``): ``nodes`` per segment (6), ``pitch`` (control), ``cruise_distance_nmi`` (50),
 ``reserve_cruise_distance_nmi`` (5), ``cruise_altitude_ft``, ``cruise_speed_mph``,
@@ -53,7 +60,7 @@ motor models (``mdo.studies.airframe_variant``; results/table3_reconciliation.md
 """
 from dataclasses import replace
 
-from mdo.core.units import FT, MPH, NMI
+from mdo.core.units import DEG, FT, MPH, NMI
 from mdo.mission.profiles import evtol_mission
 from mdo.nlp import Problem
 from mdo.studies import AIRCRAFT_OPTIONS, AIRFRAME_OPTIONS, airframe_variant, minimize_battery_energy
@@ -68,6 +75,8 @@ OPTIONS = {**AIRCRAFT_OPTIONS, **AIRFRAME_OPTIONS,
     "n_azimuth": (int, 1, 12),
     "tol": (float, 1e-10, 1e-2),
     "pitch": (str, "control", "schedule"),
+    "tilt": (str, "schedule", "control"),
+    "cabin_attitude_deg": (float, 2.0, 60.0),
 }
 
 
@@ -104,7 +113,8 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
           limits: bool = True, tip_mach_limit: str = "nodes", allow_regeneration: bool = True,
           wake_samples: int = 5, tol: float = 1e-4, pitch: str = "control",
           motor_model: str = "pmsm", sections: str = "as_defined", leakage_fraction: float | None = None,
-          nacelle_slipstream: bool = True, cooling_drag: bool = True, airframe_calibration: float | None = None):
+          nacelle_slipstream: bool = True, cooling_drag: bool = True, airframe_calibration: float | None = None,
+          tilt: str = "schedule", cabin_attitude_deg: float | None = None):
     p = Problem("ttw", "TTW tandem tilt-wing whole-mission optimization (Clarke et al. Eq. 7)")
     cfg = ttw(rotation)
     cfg = replace(cfg, battery=replace(cfg.battery, cells_series=cells_series, cells_parallel=cells_parallel,
@@ -116,8 +126,10 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
     vehicle = Aircraft(cfg, n_stations=n_stations, n_azimuth=n_azimuth, wing_strips=wing_strips,
                        mass_model=mass_model, coupling=coupling, swirl_recovery=swirl_recovery, limits=limits,
                        tip_mach_limit=tip_mach_limit, allow_regeneration=allow_regeneration,
-                       design_point_constraints=not analysis, wake_samples=wake_samples, pitch=pitch)
-    mission = evtol_mission(vehicle, nodes=nodes, cruise_distance_m=cruise_distance_nmi * NMI,
+                       design_point_constraints=not analysis, wake_samples=wake_samples, pitch=pitch, tilt=tilt)
+    attitude = {} if cabin_attitude_deg is None else \
+        {"body_angle_bounds_rad": (-cabin_attitude_deg * DEG, cabin_attitude_deg * DEG)}
+    mission = evtol_mission(vehicle, nodes=nodes, cruise_distance_m=cruise_distance_nmi * NMI, **attitude,
                             reserve_cruise_distance_m=reserve_cruise_distance_nmi * NMI,
                             cruise_altitude_m=cruise_altitude_ft * FT,
                             cruise_speed_mps=cruise_speed_mph * MPH).build(p)

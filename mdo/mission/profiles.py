@@ -215,17 +215,21 @@ def evtol_segments(*, cruise_distance_m: float = 50 * NMI, reserve_cruise_distan
     linear pitch schedule.  ``cruise_altitude_m``/``cruise_speed_mps``: where CL ends
     and CR flies (Table 5: 2500 ft, 175 mph).  The transition segments (VC, VT,
     CT1, CT2, AT, DT, VD) keep the wing's post-stall model and carry no stall limit
-    (``stall_margin_cl`` = -1); the wing-borne segments do.
+    (``stall_margin_cl`` = -1); the wing-borne segments do.  VT, CT1, CT2, AT and DT
+    set ``wing_tilt_control`` = 1: with ``Aircraft(tilt="control")`` their wing-mounted
+    angle is a control (Table 5's WMA is then the initial guess only).
     """
     ft, mph, fpm = FT, MPH, FT_PER_MIN
     n = lambda s: _nodes(nodes, s)  # noqa: E731
     tp = transition_pitch or {}
     _check_cruise(cruise_altitude_m, cruise_speed_mps, "the reserve altitude", 125 * mph)
 
-    def p(wma, bc, transition=False):
+    def p(wma, bc, transition=False, tilt=False):
         out = {"wing_mounted_angle_rad": wma * DEG, "pitch_command_rad": bc * DEG}
         if transition:
             out["stall_margin_cl"] = -1.0
+        if tilt:   # where Aircraft(tilt="control") flies the wing-mounted angle as a control
+            out["wing_tilt_control"] = 1.0
         return out
 
     def pitch(sym):
@@ -238,14 +242,14 @@ def evtol_segments(*, cruise_distance_m: float = 50 * NMI, reserve_cruise_distan
                        parameters=p(90, -5, True), nodes=n("VC"), description="vertical climb"),
         ConstantAccelerationConstantPitchrateConstantAltitude(
             "VT", speed_start_mps=300 * fpm, speed_end_mps=55 * mph,
-            acceleration_mps2=vertical_transition_acceleration_mps2, parameters=p(45, 3, True), nodes=n("VT"),
+            acceleration_mps2=vertical_transition_acceleration_mps2, parameters=p(45, 3, True, True), nodes=n("VT"),
             description="vertical transition", **pitch("VT")),
         ConstantAccelerationConstantAngleLinearClimb("CT1", altitude_end_m=100 * ft, speed_end_mps=85 * mph,
-                                                     climb_rate_mps=500 * fpm, parameters=p(15, 5, True), nodes=n("CT1"),
+                                                     climb_rate_mps=500 * fpm, parameters=p(15, 5, True, True), nodes=n("CT1"),
                                                      description="climb transition no. 1"),
         ConstantAccelerationConstantAngleLinearClimb("CT2", altitude_end_m=100 * ft, speed_end_mps=125 * mph,
                                                      acceleration_mps2=climb_transition_acceleration_mps2,
-                                                     parameters=p(15, 5, True), nodes=n("CT2"),
+                                                     parameters=p(15, 5, True, True), nodes=n("CT2"),
                                                      description="climb transition no. 2"),
         LinearSpeedConstantRate("CL", altitude_end_m=cruise_altitude_m, speed_end_mps=cruise_speed_mps,
                                 climb_rate_mps=500 * fpm, parameters=p(0, 16), nodes=n("CL"), description="climb"),
@@ -260,11 +264,11 @@ def evtol_segments(*, cruise_distance_m: float = 50 * NMI, reserve_cruise_distan
         LinearSpeedConstantRate("RD", altitude_end_m=100 * ft, speed_end_mps=125 * mph, climb_rate_mps=-300 * fpm,
                                 parameters=p(0, 16), nodes=n("RD"), description="reserve descent"),
         ConstantAccelerationConstantAngleLinearClimb("AT", altitude_end_m=40 * ft, speed_end_mps=55 * mph,
-                                                     climb_rate_mps=-200 * fpm, parameters=p(0, 16, True), nodes=n("AT"),
+                                                     climb_rate_mps=-200 * fpm, parameters=p(0, 16, True, True), nodes=n("AT"),
                                                      description="approach transition"),
         ConstantAccelerationConstantPitchrateConstantAltitude(
             "DT", speed_end_mps=300 * fpm, acceleration_mps2=descent_transition_acceleration_mps2,
-            parameters=p(25, 10, True), nodes=n("DT"), description="descent transition", **pitch("DT")),
+            parameters=p(25, 10, True, True), nodes=n("DT"), description="descent transition", **pitch("DT")),
         VerticalDescent("VD", altitude_end_m=0.0, descent_rate_mps=300 * fpm, parameters=p(90, -5, True), nodes=n("VD"),
                         description="vertical descent"),
     ]

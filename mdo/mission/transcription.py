@@ -60,7 +60,9 @@ DEFAULT_NODES = 6
 STANDARD_PARAMETERS = {"wing_mounted_angle_rad": 0.0, "pitch_command_rad": 0.0,
                        # flap deflection 0-1 and the stall limit's cl margin (negative: no stall
                        # limit, e.g. tilt-wing transitions); a vehicle without these ignores them
-                       "flap_deflection": 0.0, "stall_margin_cl": 0.1}
+                       "flap_deflection": 0.0, "stall_margin_cl": 0.1,
+                       # 1 where a tilt-wing may fly its wing-mounted angle as a control
+                       "wing_tilt_control": 0.0}
 
 
 @dataclass
@@ -346,6 +348,8 @@ class Mission:
                 if np.size(v) == rows else np.asarray(v, float)  # noqa: E731
             if u.only_where is not None or u.hold_where_uncollocated:   # a control of some nodes only
                 unknowns[u.name] = self._masked_unknown(problem, u, params, init, col)
+                if u.replaces is not None or u.max_rate is not None:
+                    self._control_continuity_and_rate(problem, u, unknowns[u.name], params)
                 continue
             unknowns[u.name] = problem.variable(f"{P}{u.name}", (rows, K), unit=u.unit,
                                                 scale=np.broadcast_to(col(u.scale), (rows, K)),
@@ -571,6 +575,44 @@ class Mission:
         cols = [int(k) for k in active]
         spread = ca.DM.triplet([index[int(owner[k])] for k in cols], cols, ca.DM.ones(len(cols)), n, K)
         return ca.densify(ca.mtimes(var, spread))
+
+    def _control_continuity_and_rate(self, problem, u, row, params):
+        """A control that takes over the segment parameter ``u.replaces`` where
+        ``u.only_where`` > 0: equal values at every segment join (the last node of a
+        segment and the first of the next are one instant), against the parameter where a
+        neighbour keeps it prescribed; and |d(control)/dt| <= ``u.max_rate`` at every node
+        of its segments, ``+-(D u)_j / T - max_rate <= 0`` (D the CGL differentiation
+        matrix on s in [0, 1], T the segment's duration)."""
+        if u.only_where is None or int(u.rows) != 1:
+            raise InputError(f"unknown {u.name!r}", "replaces/max_rate need only_where and one row")
+        if u.replaces is not None and u.replaces not in params:
+            raise InputError(f"unknown {u.name!r}.replaces", f"a segment parameter of the vehicle, got "
+                                                             f"{u.replaces!r}")
+        on = np.asarray(params[u.only_where], float).ravel() * np.ones(self.K) > 0.0
+        seg_on = [bool(on[g.node0]) for g in self._segs]
+        if u.replaces is not None:
+            fixed = np.asarray(params[u.replaces], float).ravel() * np.ones(self.K)
+            value = lambda k: row[0, k] if on[k] else float(fixed[k])  # noqa: E731
+            gaps, labels = [], []
+            for a, b in zip(self._segs[:-1], self._segs[1:]):
+                if seg_on[self._segs.index(a)] or seg_on[self._segs.index(b)]:
+                    gaps.append(value(b.node0) - value(a.node0 + a.n - 1))
+                    labels.append(f"{a.segment.name}/{b.segment.name}")
+            if gaps:
+                problem.constrain(f"{u.name} continuity", ca.vertcat(*gaps), scale=float(np.max(u.scale)),
+                                  unit=u.unit, labels=labels)
+        if u.max_rate is None:
+            return
+        pieces, labels = [], []
+        for g, is_on in zip(self._segs, seg_on):
+            if not is_on:
+                continue
+            rate = ca.mtimes(row[0, g.node0:g.node0 + g.n], ca.DM(Collocation(g.n).D).T) / g.duration
+            pieces += [rate - u.max_rate, -rate - u.max_rate]
+            labels += [f"{self.labels[g.node0 + j]} {sign}" for sign in ("rising", "falling") for j in range(g.n)]
+        if pieces:
+            problem.constrain(f"{u.name} rate", ca.horzcat(*pieces), kind="<=",
+                              scale=float(u.max_rate), unit=f"{u.unit}/s", labels=labels)
 
     def _uncollocated_nodes(self) -> list:
         """Nodes whose state derivative enters no defect: the first node of each segment

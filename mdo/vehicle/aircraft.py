@@ -129,6 +129,14 @@ class Aircraft:
     wake_samples : points across each lattice strip over which the propeller wake is
         averaged (default 5; 1 = at the control point, which makes the energy ripple
         with the rotor position, see mdo/README.md).
+    pitch : ``"control"`` (variable-pitch groups fly their collective as a control) or
+        ``"schedule"`` (the segments' ``pitch_command_rad``).
+    tilt : ``"schedule"`` (default: the segments' ``wing_mounted_angle_rad``, Table 5) or
+        ``"control"``: a tilt-wing's wing-mounted angle is a control (``wing_tilt``) at
+        every node of the segments with ``wing_tilt_control`` > 0 (the eVTOL profile's
+        transitions), within the tilting wings' ``tilt_range_deg``, at most their
+        ``max_tilt_rate_degps``, continuous with the prescribed angle of the neighbouring
+        segments; its rotors there are azimuth-averaged whatever the angle.
     Segments may set ``drag_device_area_m2`` (gear/flap drag on approach, a control),
     ``flap_deflection`` (0-1, raises the stall limit of flapped strips) and
     ``<group>.active`` (0: that rotor group stopped/folded there).
@@ -142,9 +150,9 @@ class Aircraft:
                  bounds: DesignBounds | None = None,
                  positions_free: bool | None = None, design_point_constraints: bool = True,
                  wing_stall: bool | None = None, slipstream_breaks: bool = False, wake_samples: int = 5,
-                 pitch: str = "control"):
+                 pitch: str = "control", tilt: str = "schedule"):
         self._check_options(config, free, coupling, mass_model, tip_mach_limit, swirl_recovery, wake_samples,
-                            stall_margin_cl, max_span_m, pitch)
+                            stall_margin_cl, max_span_m, pitch, tilt)
         self.config = config
         self.name = config.name
         self.free = set(free)
@@ -171,12 +179,14 @@ class Aircraft:
         # variable-pitch groups fly their collective as a control at every node ("control"),
         # or the segments' pitch_command_rad (the paper's Table 5 schedule, "schedule")
         self.pitch = pitch
+        self.tilt = tilt
         self.groups = [RotorGroupModel(g, config.kind, any(config.wing(w).tilting for w in g.wings),
                                        n_stations=self.n_stations, n_azimuth=self.n_azimuth,
                                        pitch_control=(pitch == "control"))
                        for g in config.rotor_groups]
         self.parameters = {"wing_mounted_angle_rad": 0.0, "pitch_command_rad": 0.0, "drag_device_area_m2": 0.0,
-                           "stall_margin_cl": self.stall_margin_cl, "flap_deflection": 0.0}
+                           "stall_margin_cl": self.stall_margin_cl, "flap_deflection": 0.0,
+                           "wing_tilt_control": 0.0}
         self.parameters.update({f"{g.name}.active": 1.0 for g in self.groups})
         self.pack = config.battery.pack()
         self._problem = None
@@ -185,14 +195,15 @@ class Aircraft:
 
     @staticmethod
     def _check_options(config, free, coupling, mass_model, tip_mach_limit, swirl_recovery, wake_samples,
-                       stall_margin_cl, max_span_m, pitch="control"):
+                       stall_margin_cl, max_span_m, pitch="control", tilt="schedule"):
         if not isinstance(config, VehicleConfig):
             raise InputError("config", f"a VehicleConfig, got {type(config).__name__}")
         choices = {"coupling": (coupling, ("swirl", "freestream", "local")),
                    "mass_model": (mass_model, ("buildup", "fixed")),
                    "tip_mach_limit": (tip_mach_limit, ("nodes", "design_point", "off")),
                    "swirl_recovery": (swirl_recovery, ("bounded", "unbounded")),
-                   "pitch": (pitch, ("control", "schedule"))}
+                   "pitch": (pitch, ("control", "schedule")),
+                   "tilt": (tilt, ("schedule", "control"))}
         for field_name, (value, allowed) in choices.items():
             if value not in allowed:
                 raise InputError(field_name, f"one of {', '.join(map(repr, allowed))}, got {value!r}")
@@ -205,6 +216,8 @@ class Aircraft:
             raise InputError("stall_margin_cl", f"in [-1, 1], got {stall_margin_cl!r}")
         if max_span_m is not None and not (0.5 <= float(max_span_m) <= 100.0):
             raise InputError("max_span_m", f"in [0.5, 100] m, got {max_span_m!r}")
+        if tilt == "control" and not any(w.tilting for w in config.wings):
+            raise InputError("tilt", "'control' needs a wing with tilting=True (a tilt-wing)")
 
     # ------------------------------------------------------------------ compatibility views
     @property
@@ -467,6 +480,16 @@ class Aircraft:
         out = [u_ for gm in self.groups for u_ in gm.unknowns()]
         out.append(Unknown(spec["name"], unit=spec["unit"], scale=spec["scale"], lower=spec["lower"],
                            upper=spec["upper"], description=spec["description"]))
+        if self.tilt == "control":   # the wing-mounted angle where a segment lets it be a control
+            tilting = [w for w in self.config.wings if w.tilting]
+            lo = max(w.tilt_range_deg[0] for w in tilting)
+            hi = min(w.tilt_range_deg[1] for w in tilting)
+            if not lo < hi:
+                raise InputError("tilt_range_deg", f"the tilting wings' ranges do not overlap ({lo:g} >= {hi:g} deg)")
+            out.append(Unknown("wing_tilt", unit="rad", scale=0.5, lower=math.radians(lo), upper=math.radians(hi),
+                               only_where="wing_tilt_control", replaces="wing_mounted_angle_rad",
+                               max_rate=math.radians(min(w.max_tilt_rate_degps for w in tilting)),
+                               description=f"wing-mounted angle of the tilting wings ({lo:g} to {hi:g} deg)"))
         # gear/flap deployment: a control only where a segment allows a drag device
         out.append(Unknown("drag_device_deployment", unit="-", scale=1.0, lower=0.0, upper=1.0,
                            description="gear/flap deployment on approach (fraction of drag_device_area_m2)",
@@ -488,6 +511,21 @@ class Aircraft:
         return [ResidualGroup("state of charge reserve", final_states["state_of_charge"] - r, kind=">=",
                               scale=0.1, unit="-", row_labels=[f"end of mission (reserve {r:g})"])]
 
+    def tilt_control_nodes(self, parameters, K) -> np.ndarray:
+        """Nodes where the wing-mounted angle is the ``wing_tilt`` control (bool, K)."""
+        if self.tilt != "control":
+            return np.zeros(K, bool)
+        return _num(parameters.get("wing_tilt_control", _row(0.0, K))).ravel() * np.ones(K) > 0.0
+
+    def wing_mounted_angle(self, parameters, unknowns, K):
+        """The wing-mounted angle at every node (rad, 1 x K): the segments' schedule, or the
+        ``wing_tilt`` control at the nodes of ``tilt_control_nodes``."""
+        wma = parameters.get("wing_mounted_angle_rad", _row(0.0, K))
+        on = self.tilt_control_nodes(parameters, K)
+        if not on.any():
+            return wma
+        return unknowns["wing_tilt"] + _row(1.0 - on) * wma
+
     def rotor_axis_angle(self, gm, wma):
         """Angle of a group's thrust axis above the body x axis: the wing-mounted angle if its wing tilts."""
         return wma if gm.tilting else 0.0 * wma
@@ -500,9 +538,11 @@ class Aircraft:
         rho, mu, a_s = (_row(atm[k]) for k in ("density_kgpm3", "dynamic_viscosity_Pas", "speed_of_sound_mps"))
         V, gam, theta = nodes.speed_mps, nodes.flight_path_angle_rad, nodes.body_angle_rad
         alpha = theta - gam
-        wma = nodes.parameters.get("wing_mounted_angle_rad", _row(0.0, K))
+        wma = self.wing_mounted_angle(nodes.parameters, unknowns, K)
         pitch = nodes.parameters.get("pitch_command_rad", _row(0.0, K))
-        env = dict(K=K, rho=rho, mu=mu, a_s=a_s, V=V, alpha=alpha, wma=wma, pitch=pitch)
+        env = dict(K=K, rho=rho, mu=mu, a_s=a_s, V=V, alpha=alpha, wma=wma, pitch=pitch,
+                   wma_schedule=_num(nodes.parameters.get("wing_mounted_angle_rad", _row(0.0, K))).ravel()
+                   * np.ones(K), tilt_nodes=self.tilt_control_nodes(nodes.parameters, K))
         rot = {gm.name: self._rotor_nodes(gm, nodes, unknowns, env) for gm in self.groups}
         soc = nodes.states["state_of_charge"]
         ib = unknowns["battery_current_A"]
@@ -542,8 +582,8 @@ class Aircraft:
         pitch = env["pitch"]
         if gm.pitch_control:   # the collective where the rotor runs (a control), the schedule's where stopped
             pitch = unknowns[f"{g.name}.collective_pitch"] + _row(1.0 - (act > 0.5)) * pitch
-        bm, residuals = gm.bemt_nodes(K, _num(wma).ravel(), pitch, omega, v_ax, v_ip, env["rho"],
-                                      env["mu"], env["a_s"], phi)
+        bm, residuals = gm.bemt_nodes(K, env["wma_schedule"], pitch, omega, v_ax, v_ip, env["rho"],
+                                      env["mu"], env["a_s"], phi, azimuth_nodes=env["tilt_nodes"])
         on = np.flatnonzero(act > 0.5)
         off = np.flatnonzero(act <= 0.5)
         if off.size:   # stopped: hold the speed so the unused BEMT unknowns stay determined
@@ -720,5 +760,17 @@ class Aircraft:
     def initial_guess(self, nodes) -> dict:
         """Physics-based guesses at the baseline design (:mod:`mdo.vehicle.guess`)."""
         from .guess import initial_guess
-        return initial_guess(self, nodes)
+        out = initial_guess(self, nodes)
+        if self.tilt == "control":
+            # the guess flies the schedule's wing and thrust angles (body + tilt) with the
+            # cabin level where the tilt's range allows: the forces of the guess are unchanged
+            K = nodes.size
+            wma = _num(nodes.parameters.get("wing_mounted_angle_rad", _row(0.0, K))).ravel() * np.ones(K)
+            spec = next(u for u in self.unknowns() if u.name == "wing_tilt")
+            on = self.tilt_control_nodes(nodes.parameters, K)
+            theta = np.asarray(out["body_angle_rad"], float).ravel() * np.ones(K)
+            tilt = np.where(on, np.clip(wma + theta, spec.lower, spec.upper), wma)
+            out["wing_tilt"] = tilt
+            out["body_angle_rad"] = theta - (tilt - wma)
+        return out
 

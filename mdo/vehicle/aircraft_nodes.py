@@ -107,6 +107,8 @@ def node_outputs(ac, nodes, rot, aero, po, env) -> dict:
                                           "rotational kinetic-energy flux of all slipstreams"),
         "swirl_credited_power_W": Output(aero["swirl_credit_W"], "W", "swirl power credited (bounded)"),
         "angle_of_attack_deg": Output(alpha / u.DEG, "deg"),
+        "wing_mounted_angle_deg": Output(env["wma"] * _row(1.0, env["K"]) / u.DEG, "deg",
+                                         "wing-mounted angle flown (the schedule, or the tilt control)"),
         "thrust_N": Output(T_tot, "N", "total thrust"),
         "thrust_power_W": Output(P_thrust, "W", "rotor force along the path times speed (useful propulsive power)"),
         "shaft_power_W": Output(P_shaft, "W", "total shaft power"),

@@ -89,6 +89,9 @@ class Unknown:
     ``only_where``: the name of a segment parameter; the unknown is then a variable
     only at the nodes where that parameter is > 0 (a control some segments allow,
     e.g. a drag device on approach) and the vehicle sees zeros elsewhere.
+    ``replaces`` and ``max_rate`` (with ``only_where``): a control that takes over a
+    segment parameter, continuous across segment joins and rate-limited
+    (:meth:`mdo.mission.Mission` adds the groups "<name> continuity" and "<name> rate").
     """
 
     name: str
@@ -105,6 +108,14 @@ class Unknown:
     #: look at the derivative (the first node of each segment in the differentiation
     #: form) it would be undetermined, so there it holds the next node's value
     hold_where_uncollocated: bool = False
+    #: the segment parameter this control takes over where it is a variable (e.g. a
+    #: tilt-wing's ``wing_mounted_angle_rad``): the mission then holds the control
+    #: continuous at every segment join, against the parameter's value where the
+    #: neighbouring segment keeps it prescribed (a wing cannot jump)
+    replaces: str | None = None
+    #: the largest rate of change of the control, ``unit`` per second, at every node of
+    #: the segments where it is a variable (an actuator's rate; None: unlimited)
+    max_rate: float | None = None
 
 
 @dataclass(frozen=True)

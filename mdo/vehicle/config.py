@@ -60,6 +60,12 @@ class WingConfig:
     flap_span_eta: tuple = (0.0, 0.0)   # flapped part of the semispan (fractions), for the stall margin
     flap_clmax_increment: float = 0.0   # section cl_max gain of the fully deflected flap (mdo.vehicle.stall)
     pivot_x_m: float | None = None  # tilt axis position (defaults to the quarter chord)
+    # the tilt mechanism, used where the wing-mounted angle is a control (Aircraft(tilt="control")):
+    # its stops, and its largest rate.  10 deg/s: the Canadair CL-84 tilt-wing went from
+    # hover to 100 kt in 8 s, some 11 deg/s of wing tilt on average (Wikipedia, "Tiltwing",
+    # retrieved 2026-12); a placeholder to replace by the actuator of the design at hand
+    tilt_range_deg: tuple = (0.0, 90.0)
+    max_tilt_rate_degps: float = 10.0
 
     def __post_init__(self):
         if self.role not in WING_ROLES:
@@ -68,6 +74,11 @@ class WingConfig:
         if not (0.0 <= lo <= hi <= 1.0):
             raise InputError(f"{self.name}.flap_span_eta", f"0 <= start <= end <= 1, got {self.flap_span_eta!r}")
         check_range(f"{self.name}.flap_clmax_increment", self.flap_clmax_increment, 0.0, 2.5)
+        lo, hi = (float(x) for x in self.tilt_range_deg)
+        if not (-30.0 <= lo < hi <= 120.0):
+            raise InputError(f"{self.name}.tilt_range_deg", f"a pair (lower, upper) with -30 <= lower < upper "
+                             f"<= 120 deg, got {self.tilt_range_deg!r}")
+        check_range(f"{self.name}.max_tilt_rate_degps", self.max_tilt_rate_degps, 0.1, 180.0, "deg/s")
         if self.tilting and self.role not in LIFTING_ROLES:
             raise InputError(f"{self.name}.tilting", f"only a main or tandem wing may tilt, this one is "
                              f"a {self.role}")

@@ -80,7 +80,7 @@ def _loading(vehicle, mission, solution, k):
     cond = mission.cond
     alpha = cond.body_angle_rad[:, k] - cond.flight_path_angle_rad[:, k]
     if vehicle.config.kind == "tilt_wing":
-        alpha = alpha + cond.parameters.get("wing_mounted_angle_rad", ca.DM.zeros(1, cond.size))[:, k]
+        alpha = alpha + vehicle.wing_mounted_angle(cond.parameters, mission.unknowns, cond.size)[:, k]
     V = cond.speed_mps[:, k]
     r_off = vlm.solve(alpha, V)
     cl_off = _val(solution, r_off["cl"]).ravel()

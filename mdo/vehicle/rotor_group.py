@@ -176,10 +176,12 @@ class RotorGroupModel:
         tilt_deg = np.degrees(wma)
         return (np.abs(tilt_deg) > 1.0) & (np.abs(tilt_deg - 90.0) > 1.0)
 
-    def bemt_nodes(self, K, wma, pitch, omega, v_ax, v_ip, rho, mu, a_s, phi):
+    def bemt_nodes(self, K, wma, pitch, omega, v_ax, v_ip, rho, mu, a_s, phi, azimuth_nodes=None):
         """BEMT outputs at all K nodes and the residual groups (``ResidualGroup`` with
-        ``columns``): azimuth-averaged at transition nodes, axial elsewhere (the unused
-        azimuth rows of phi then copy the axial ones, so that every unknown has an equation)."""
+        ``columns``): azimuth-averaged at transition nodes (by the scheduled angle ``wma``,
+        numbers, or where ``azimuth_nodes`` is True: a tilt that is a control), axial
+        elsewhere (the unused azimuth rows of phi then copy the axial ones, so that every
+        unknown has an equation)."""
         g, n, m = self.config, self.n_stations, self.n_azimuth
         d = self.design
         common = dict(radius_m=d["R"], hub_fraction=g.hub_fraction, blades=g.blades,
@@ -188,6 +190,8 @@ class RotorGroupModel:
                    mu_Pas=mu, a_mps=a_s)
         rows_m = [f"r{i} psi{j}" for j in range(m) for i in range(n)]
         mask = self.transition_nodes(wma)
+        if azimuth_nodes is not None and self.tilting and m > 1:
+            mask = mask | np.asarray(azimuth_nodes, bool)
         if m == 1 or mask.all():
             out = self.bemt.map(K)(**common, **per, phi_rad=phi)
             return out, [ResidualGroup(f"{g.name} BEMT", out["residual"], row_labels=rows_m)]

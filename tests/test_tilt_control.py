@@ -1,0 +1,142 @@
+"""A control that takes over a segment parameter (the tilt-wing's wing-mounted angle):
+continuity at segment joins, the rate limit, and what it is worth.
+
+The toy vehicle flies level with its thrust and wing turned by a tilt ``delta`` against
+the body: the wing's lift and the thrust see ``a + delta`` (a the body's angle of attack),
+the fuselage's drag sees ``a`` alone, so a free tilt lets the cabin fly level while the
+wing sits at its own best angle, and the schedule (delta = 0) cannot.
+"""
+import math
+
+import casadi as ca
+import numpy as np
+import pytest
+
+from mdo.core import InputError, density
+from mdo.mission import Mission
+from mdo.mission import segments as S
+from mdo.nlp import Problem
+from mdo.vehicle import G0, NodeEvaluation, Output, State, Unknown
+
+MAX_RATE = math.radians(0.1)   # slow enough that the actuator shapes the whole of segment B
+
+
+class TiltingToy:
+    name = "tilting_toy"
+    parameters = {"tilt_rad": 0.0, "tilt_free": 0.0}
+    reference_mass_kg = 1000.0
+
+    def __init__(self, control=True):
+        self.control = control
+        self.S, self.cla, self.CD0, self.k, self.k_body = 10.0, 5.0, 0.02, 0.05, 2.0
+
+    def setup(self, problem):
+        pass
+
+    def unknowns(self):
+        out = [Unknown("thrust", unit="N", scale=1e3, lower=0.0, upper=1e5)]
+        if self.control:
+            out.append(Unknown("tilt", unit="rad", scale=0.1, lower=-0.5, upper=0.5, only_where="tilt_free",
+                               replaces="tilt_rad", max_rate=MAX_RATE))
+        return out
+
+    def states(self):
+        return [State("energy", unit="J", scale=1e7, initial=0.0)]
+
+    def energy_used_J(self, initial, final):
+        return final["energy"] - initial["energy"]
+
+    def initial_guess(self, nodes):
+        K = nodes.size
+        return {"thrust": np.full(K, 800.0), "body_angle_rad": np.full(K, 0.05), "tilt": np.zeros(K)}
+
+    def evaluate(self, nodes, unknowns):
+        K = nodes.size
+        on = np.asarray(nodes.parameters["tilt_free"], float).ravel() * np.ones(K) > 0
+        tilt = nodes.parameters["tilt_rad"]
+        if self.control:
+            tilt = unknowns["tilt"] + ca.DM((1.0 - on).reshape(1, -1)) * tilt
+        a = nodes.body_angle_rad - nodes.flight_path_angle_rad
+        q = 0.5 * density(nodes.altitude_m) * nodes.speed_mps ** 2
+        CL = self.cla * (a + tilt)
+        D = q * self.S * (self.CD0 + self.k * CL ** 2 + self.k_body * a ** 2)   # the fuselage sees a only
+        T = unknowns["thrust"]
+        return NodeEvaluation(
+            mass_kg=self.reference_mass_kg, force_along_path_N=T * ca.cos(a + tilt) - D,
+            force_normal_N=T * ca.sin(a + tilt) + q * self.S * CL, force_scale_N=self.reference_mass_kg * G0,
+            residuals=[], state_derivatives={"energy": T * nodes.speed_mps},
+            outputs={"tilt_deg": Output(tilt * ca.DM.ones(1, K) * 180 / math.pi, "deg")})
+
+
+def _fly(control):
+    segs = [S.ConstantSpeedConstantAltitude("A", speed_mps=40.0, altitude_m=500.0, distance_m=2000.0,
+                                            parameters={"tilt_rad": 0.0}),
+            S.ConstantSpeedConstantAltitude("B", distance_m=4000.0, parameters={"tilt_rad": 0.0, "tilt_free": 1.0})]
+    p = Problem("tilt_toy")
+    m = Mission(TiltingToy(control), segs, nodes=8).build(p)
+    p.minimize(m.energy_used_J / 1e6, unit="MJ")
+    sol = p.solve(verbose=False)
+    assert sol.success, sol.violation_report()
+    return p, m, sol
+
+
+def test_a_tilt_control_is_continuous_rate_limited_and_buys_a_level_cabin():
+    p_s, m_s, sol_s = _fly(False)
+    p, m, sol = _fly(True)
+    tilt = np.asarray(sol.value(m.report_rows()["tilt_deg"][0])).ravel()
+    nB = slice(8, 16)
+    # continuity: B starts where A's schedule ends (0), then tilts at no more than the rate
+    assert tilt[8] == pytest.approx(0.0, abs=1e-8)
+    assert "tilt continuity" in p.groups and p.groups["tilt continuity"].labels == ["A/B"]
+    T_B = 4000.0 / 40.0
+    from mdo.core import Collocation
+    rate = np.radians(tilt[nB]) @ Collocation(8).D.T / T_B
+    assert np.max(np.abs(rate)) <= MAX_RATE * (1 + 1e-6)
+    assert np.max(np.abs(rate)) == pytest.approx(MAX_RATE, rel=1e-4)     # the actuator limits it
+    # the free tilt flies a more level cabin and needs less energy than the schedule
+    theta_B = np.asarray(sol.value(m.theta)).ravel()[nB]
+    theta_s = np.asarray(sol_s.value(m_s.theta)).ravel()[nB]
+    assert abs(theta_B[-1]) < 0.2 * abs(theta_s[-1])
+    assert tilt[15] > 1.0
+    assert sol.objective < sol_s.objective * (1 - 1e-3)
+
+
+def test_a_replacing_control_names_a_parameter_the_mission_knows():
+    class Bad(TiltingToy):
+        def unknowns(self):
+            return [Unknown("thrust", unit="N", scale=1e3, lower=0.0),
+                    Unknown("tilt", unit="rad", only_where="tilt_free", replaces="no_such_parameter",
+                            max_rate=MAX_RATE)]
+    segs = [S.ConstantSpeedConstantAltitude("A", speed_mps=40.0, altitude_m=500.0, distance_m=2000.0,
+                                            parameters={"tilt_free": 1.0})]
+    with pytest.raises(InputError, match="no_such_parameter"):
+        Mission(Bad(), segs, nodes=5).build(Problem("bad"))
+
+
+def test_the_tilt_wing_flies_its_transitions_tilt_as_a_control():
+    """The TTW with ``tilt="control"``: the wing_tilt variable exists at the transition
+    nodes only, is continuous at every join of a transition with its neighbours, rate-limited
+    by the wings' actuator, and the rotors of every tilt-controlled node are azimuth-averaged
+    (AT's scheduled angle is 0, where the schedule flies them axial)."""
+    from mdo.mission.profiles import evtol_mission
+    from mdo.vehicle.aircraft import Aircraft
+    from mdo.vehicle.catalog import ttw
+
+    cfg = ttw()
+    v = Aircraft(cfg, free=(), n_stations=6, n_azimuth=2, wing_strips=4, tail_strips=2, limits=False,
+                 design_point_constraints=False, tilt="control")
+    p = Problem("ttw_tilt")
+    m = evtol_mission(v, nodes=3).build(p)
+    assert p.groups["wing_tilt continuity"].labels == ["VC/VT", "VT/CT1", "CT1/CT2", "CT2/CL", "RD/AT", "AT/DT",
+                                                       "DT/VD"]
+    assert p.groups["wing_tilt rate"].size == 2 * 5 * 3
+    var = p.variables["wing_tilt"]
+    assert var.shape == (1, 5 * 3)
+    np.testing.assert_allclose(var.lower, 0.0)
+    np.testing.assert_allclose(var.upper, math.pi / 2)                 # WingConfig.tilt_range_deg (0, 90)
+    assert var.labels[0] == "VT node 0" and var.labels[-1] == "DT node 2"
+    assert "rotors BEMT (azimuth-averaged)" in p.groups
+    at_nodes = [i for i, lab in enumerate(m.labels) if lab.startswith("AT ")]
+    assert set(at_nodes) <= set(int(c) for c in v.tilt_control_nodes(m.cond.parameters, m.K).nonzero()[0])
+    with pytest.raises(InputError, match="tilt"):
+        Aircraft(cfg, tilt="sometimes")
