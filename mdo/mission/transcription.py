@@ -594,8 +594,8 @@ class Mission:
             fixed = np.asarray(params[u.replaces], float).ravel() * np.ones(self.K)
             value = lambda k: row[0, k] if on[k] else float(fixed[k])  # noqa: E731
             gaps, labels = [], []
-            for a, b in zip(self._segs[:-1], self._segs[1:]):
-                if seg_on[self._segs.index(a)] or seg_on[self._segs.index(b)]:
+            for i, (a, b) in enumerate(zip(self._segs[:-1], self._segs[1:])):
+                if seg_on[i] or seg_on[i + 1]:
                     gaps.append(value(b.node0) - value(a.node0 + a.n - 1))
                     labels.append(f"{a.segment.name}/{b.segment.name}")
             if gaps:

@@ -69,7 +69,7 @@ from ..wing import VLM, Body, body_drag, constant_area, profile_drag, trapezoid
 from ..wing.buildup import CP_AIR
 from ..wing.drag import form_factor_wing, skin_friction
 from .aircraft_nodes import _num, _row, node_outputs, operating_limits
-from .base import G0, NodeEvaluation, Output, ResidualGroup, State
+from .base import G0, NodeEvaluation, Output, ResidualGroup, State, Unknown
 from .config import VehicleConfig, WingConfig, disks_in_one_plane
 from .mass import MassDesign, solve_togw, total_mass
 from .rotor_group import RotorGroupModel, section_name
@@ -475,21 +475,12 @@ class Aircraft:
 
     # ------------------------------------------------------------------ protocol
     def unknowns(self):
-        from .base import Unknown
         spec = self.bus.battery_current_unknown()
         out = [u_ for gm in self.groups for u_ in gm.unknowns()]
         out.append(Unknown(spec["name"], unit=spec["unit"], scale=spec["scale"], lower=spec["lower"],
                            upper=spec["upper"], description=spec["description"]))
         if self.tilt == "control":   # the wing-mounted angle where a segment lets it be a control
-            tilting = [w for w in self.config.wings if w.tilting]
-            lo = max(w.tilt_range_deg[0] for w in tilting)
-            hi = min(w.tilt_range_deg[1] for w in tilting)
-            if not lo < hi:
-                raise InputError("tilt_range_deg", f"the tilting wings' ranges do not overlap ({lo:g} >= {hi:g} deg)")
-            out.append(Unknown("wing_tilt", unit="rad", scale=0.5, lower=math.radians(lo), upper=math.radians(hi),
-                               only_where="wing_tilt_control", replaces="wing_mounted_angle_rad",
-                               max_rate=math.radians(min(w.max_tilt_rate_degps for w in tilting)),
-                               description=f"wing-mounted angle of the tilting wings ({lo:g} to {hi:g} deg)"))
+            out.append(self._tilt_unknown())
         # gear/flap deployment: a control only where a segment allows a drag device
         out.append(Unknown("drag_device_deployment", unit="-", scale=1.0, lower=0.0, upper=1.0,
                            description="gear/flap deployment on approach (fraction of drag_device_area_m2)",
@@ -510,6 +501,24 @@ class Aircraft:
         r = self.config.battery.reserve_soc
         return [ResidualGroup("state of charge reserve", final_states["state_of_charge"] - r, kind=">=",
                               scale=0.1, unit="-", row_labels=[f"end of mission (reserve {r:g})"])]
+
+    # ------------------------------------------------------------------ wing tilt
+    def _tilt_unknown(self):
+        """The ``wing_tilt`` control: the tilting wings' common range and slowest rate."""
+        tilting = [w for w in self.config.wings if w.tilting]
+        lo = max(w.tilt_range_deg[0] for w in tilting)
+        hi = min(w.tilt_range_deg[1] for w in tilting)
+        if not lo < hi:
+            raise InputError("tilt_range_deg", f"the tilting wings' ranges do not overlap ({lo:g} >= {hi:g} deg)")
+        return Unknown("wing_tilt", unit="rad", scale=0.5, lower=math.radians(lo), upper=math.radians(hi),
+                       only_where="wing_tilt_control", replaces="wing_mounted_angle_rad",
+                       max_rate=math.radians(min(w.max_tilt_rate_degps for w in tilting)),
+                       description=f"wing-mounted angle of the tilting wings ({lo:g} to {hi:g} deg)")
+
+    @staticmethod
+    def scheduled_wing_angle(parameters, K) -> np.ndarray:
+        """The segments' wing-mounted angle at every node (rad, numbers, K)."""
+        return _num(parameters.get("wing_mounted_angle_rad", _row(0.0, K))).ravel() * np.ones(K)
 
     def tilt_control_nodes(self, parameters, K) -> np.ndarray:
         """Nodes where the wing-mounted angle is the ``wing_tilt`` control (bool, K)."""
@@ -541,8 +550,8 @@ class Aircraft:
         wma = self.wing_mounted_angle(nodes.parameters, unknowns, K)
         pitch = nodes.parameters.get("pitch_command_rad", _row(0.0, K))
         env = dict(K=K, rho=rho, mu=mu, a_s=a_s, V=V, alpha=alpha, wma=wma, pitch=pitch,
-                   wma_schedule=_num(nodes.parameters.get("wing_mounted_angle_rad", _row(0.0, K))).ravel()
-                   * np.ones(K), tilt_nodes=self.tilt_control_nodes(nodes.parameters, K))
+                   wma_schedule=self.scheduled_wing_angle(nodes.parameters, K),
+                   tilt_nodes=self.tilt_control_nodes(nodes.parameters, K))
         rot = {gm.name: self._rotor_nodes(gm, nodes, unknowns, env) for gm in self.groups}
         soc = nodes.states["state_of_charge"]
         ib = unknowns["battery_current_A"]
@@ -765,8 +774,8 @@ class Aircraft:
             # the guess flies the schedule's wing and thrust angles (body + tilt) with the
             # cabin level where the tilt's range allows: the forces of the guess are unchanged
             K = nodes.size
-            wma = _num(nodes.parameters.get("wing_mounted_angle_rad", _row(0.0, K))).ravel() * np.ones(K)
-            spec = next(u for u in self.unknowns() if u.name == "wing_tilt")
+            wma = self.scheduled_wing_angle(nodes.parameters, K)
+            spec = self._tilt_unknown()
             on = self.tilt_control_nodes(nodes.parameters, K)
             theta = np.asarray(out["body_angle_rad"], float).ravel() * np.ones(K)
             tilt = np.where(on, np.clip(wma + theta, spec.lower, spec.upper), wma)
