@@ -29,6 +29,7 @@ AIRCRAFT_OPTIONS = {
     "tip_mach_limit": (str, "nodes", "design_point", "off"),
     "allow_regeneration": (bool,),
     "wake_samples": (int, 1, 15),
+    "trim": (bool,),
 }
 
 #: the free-trajectory options of a problem that offers them (problems/ga2p.py, ga8p.py)

@@ -11,7 +11,8 @@ charge left at the end), in one IPOPT solve.  ``--analysis`` freezes the design 
 Table 3's initial values (the motors are still sized; the tip-Mach limit is reported
 but not enforced: the frozen blade violates it in the climb).
 
-Options (``-o KEY=VALUE``): ``nodes`` per segment (6), ``cruise_distance_nmi`` (50),
+Options (``-o KEY=VALUE``): ``nodes`` per segment (6), ``trim`` (true: pitch trim with the
+stabilator, the CG held by the static margin; mdo.vehicle.balance), ``cruise_distance_nmi`` (50),
 ``reserve_cruise_distance_nmi`` (5), ``cruise_altitude_ft`` (2500), ``cruise_speed_mph``
 (175), ``cells_series`` (120) and ``cells_parallel`` (80) of the battery, ``n_stations``
 (16), ``wing_strips`` (24), ``mass_model`` ("buildup" or "fixed"), ``rotation``
@@ -50,7 +51,7 @@ OPTIONS = {**AIRCRAFT_OPTIONS, **AIRFRAME_OPTIONS, **TRAJECTORY_OPTIONS,
 }
 
 
-def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 50.0,
+def build(analysis: bool = False, trim: bool = True, nodes: int = 6, cruise_distance_nmi: float = 50.0,
           reserve_cruise_distance_nmi: float = 5.0, cruise_altitude_ft: float = 2500.0,
           cruise_speed_mph: float = 175.0, cells_series: int = 120, cells_parallel: int = 80,
           n_stations: int = 16, wing_strips: int = 24, mass_model: str = "buildup", rotation: str = "inboard_up",
@@ -66,7 +67,7 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
                   cruise_speed_mps=cruise_speed_mph * MPH, cruise_altitude_m=cruise_altitude_ft * FT)
     cfg = airframe_variant(cfg, motor_model, sections, leakage_fraction, nacelle_slipstream, cooling_drag,
                            airframe_calibration)
-    vehicle = Aircraft(cfg, n_stations=n_stations, wing_strips=wing_strips, mass_model=mass_model,
+    vehicle = Aircraft(cfg, trim=trim, n_stations=n_stations, wing_strips=wing_strips, mass_model=mass_model,
                        coupling=coupling, swirl_recovery=swirl_recovery, limits=limits,
                        tip_mach_limit=tip_mach_limit, allow_regeneration=allow_regeneration, max_span_m=max_span_m,
                        design_point_constraints=not analysis, wake_samples=wake_samples)

@@ -64,7 +64,7 @@ def family_config(n_props: int, rotation: str = "inboard_up"):
                    notes=(f"GA family, {n_props} propellers (problems/ga_family.py)",)), r_max
 
 
-def build(analysis: bool = False, n_props: int = 8, nodes: int = 6, cruise_distance_nmi: float = 50.0,
+def build(analysis: bool = False, trim: bool = True, n_props: int = 8, nodes: int = 6, cruise_distance_nmi: float = 50.0,
           reserve_cruise_distance_nmi: float = 5.0, cruise_altitude_ft: float = 2500.0,
           cruise_speed_mph: float = 175.0, cells_series: int = 120, cells_parallel: int = 80,
           n_stations: int = 16, wing_strips: int = 24, mass_model: str = "buildup", rotation: str = "inboard_up",
@@ -75,7 +75,7 @@ def build(analysis: bool = False, n_props: int = 8, nodes: int = 6, cruise_dista
     cfg = replace(cfg, battery=replace(cfg.battery, cells_series=cells_series, cells_parallel=cells_parallel),
                   cruise_speed_mps=cruise_speed_mph * MPH, cruise_altitude_m=cruise_altitude_ft * FT)
     p = Problem("ga_family", f"GA-{n_props}P whole-mission optimization (GA family, Eq. 7)")
-    vehicle = Aircraft(cfg, free=("rotor", "wing"), n_stations=n_stations, wing_strips=wing_strips,
+    vehicle = Aircraft(cfg, trim=trim, free=("rotor", "wing"), n_stations=n_stations, wing_strips=wing_strips,
                        mass_model=mass_model, coupling=coupling, swirl_recovery=swirl_recovery, limits=limits,
                        tip_mach_limit=tip_mach_limit, allow_regeneration=allow_regeneration, max_span_m=max_span_m,
                        design_point_constraints=not analysis, wake_samples=wake_samples)

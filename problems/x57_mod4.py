@@ -36,6 +36,7 @@ from mdo.mission.profiles import ga_segments
 from mdo.nlp import Problem
 from mdo.studies import minimize_battery_energy
 from mdo.vehicle.aircraft import Aircraft
+from mdo.vehicle.catalog import GA_CG_Z_M, GA_STABILATOR_RANGE_DEG
 from mdo.vehicle.config import (BatteryConfig, FuselageConfig, MotorConfig, RotorGroupConfig, VehicleConfig,
                                 WingConfig)
 
@@ -58,7 +59,7 @@ def x57_mod4(cells_parallel: int = 40, cruise_speed_mps: float = 172 * MPH,
                       root_z_m=1.01, flap_span_eta=(0.09, 0.75), flap_clmax_increment=1.3)
     htail = WingConfig("stabilator", span_m=3.454, area_m2=3.74, taper=0.762 / 1.397, section_eta=(0.0, 1.0),
                        twist_deg=(0.0, 0.0), airfoil="NACA_0015", role="horizontal_tail", root_le_x_m=7.7,
-                       root_z_m=0.25)
+                       root_z_m=0.25, trim_incidence_range_deg=GA_STABILATOR_RANGE_DEG)
     fin = WingConfig("fin", span_m=1.854, area_m2=2.258, taper=0.6858 / 1.6764, section_eta=(0.0, 1.0),
                      twist_deg=(0.0, 0.0), airfoil="NACA_0015", role="fin", sweep_quarter_chord_deg=25.0,
                      root_le_x_m=6.75, root_z_m=0.623)
@@ -78,13 +79,14 @@ def x57_mod4(cells_parallel: int = 40, cruise_speed_mps: float = 172 * MPH,
     return VehicleConfig(
         "X-57 Mod IV", "airplane", wings=(wing, htail, fin), rotor_groups=(cruise, highlift), fuselage=fuselage,
         battery=BatteryConfig(128, cells_parallel, max_cell_current_A=15.0), cruise_speed_mps=cruise_speed_mps,
-        cruise_altitude_m=cruise_altitude_m, togw_reference_kg=3000 * 0.45359237,
+        cruise_altitude_m=cruise_altitude_m, togw_reference_kg=3000 * 0.45359237, cg_z_m=GA_CG_Z_M,
         mass_inputs={"airframe_calibration": 1.0, "main_gear_length_in": 24.0, "nose_gear_length_in": 20.0,
                      "uninstalled_avionics_lb": 40.0})
 
 # allowed values of the -o options (mdo.nlp.options; `mdo run problems/x57_mod4.py --options`)
 OPTIONS = {
     "nodes": (int, 3, 30),
+    "trim": (bool,),
     "cruise_distance_nmi": (float, 1.0, 300.0),
     "reserve_cruise_distance_nmi": (float, 1.0, 100.0),
     "cruise_altitude_ft": (float, 0.0, 25000.0),
@@ -97,13 +99,13 @@ OPTIONS = {
 }
 
 
-def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 12.5,
+def build(analysis: bool = False, trim: bool = True, nodes: int = 6, cruise_distance_nmi: float = 12.5,
           reserve_cruise_distance_nmi: float = 5.0, cruise_altitude_ft: float = 8000.0,
           cruise_speed_mph: float = 172.0, cells_parallel: int = 40, coupling: str = "local",
           wing_strips: int = 20, n_stations: int = 12, approach_speed_kn: float = APPROACH_SPEED_MPS / KNOT):
     p = Problem("x57_mod4", "X-57 Maxwell Mod IV whole-mission optimization (two rotor groups)")
     cfg = x57_mod4(cells_parallel, cruise_speed_mph * MPH, cruise_altitude_ft * FT)
-    vehicle = Aircraft(cfg, free=("rotor", "wing"), n_stations=n_stations, wing_strips=wing_strips,
+    vehicle = Aircraft(cfg, trim=trim, free=("rotor", "wing"), n_stations=n_stations, wing_strips=wing_strips,
                        coupling=coupling, design_point_constraints=not analysis)
     folded = {s: {"highlift.active": 0.0} for s in ("CL", "CR", "D", "DL", "RCL", "RCR", "RD")}
     segs = ga_segments(cruise_distance_m=cruise_distance_nmi * NMI,

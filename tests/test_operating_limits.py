@@ -45,8 +45,11 @@ def test_every_limit_is_a_named_group_at_every_node():
         g = p.groups[name]
         assert g.kind in ("<=", ">=") and g.size == K, name
     assert p.groups["state of charge reserve"].size == 1
+    # the main wing's exposed strips and the stabilator's (a trim surface, mdo.vehicle.balance)
+    names = [s_.name for s_ in v.vlm.surfaces]
+    checked = [names.index(w.name) for w in v.lifting_wings + v.trim_surfaces]
     assert p.groups["stall margin"].size == K * int(np.sum(v.strip_exposed & np.isin(
-        np.arange(len(v.strip_exposed)), [i for i, s in enumerate(v.vlm.strip_surface) if s == 0])))
+        np.arange(len(v.strip_exposed)), [i for i, s in enumerate(v.vlm.strip_surface) if s in checked])))
     assert "cell charge current" not in p.groups
     regen, _, rm = _problem(ga2p(), allow_regeneration=True)   # charging allowed, at the charge rating
     assert "no battery charging" not in regen.groups

@@ -69,6 +69,7 @@ from ..wing import VLM, Body, body_drag, constant_area, profile_drag, trapezoid
 from ..wing.buildup import CP_AIR
 from ..wing.drag import form_factor_wing, skin_friction
 from .aircraft_nodes import _num, _row, node_outputs, operating_limits
+from .balance import mean_aerodynamic_chord, neutral_point_x, pitching_moment_about_cg, section_cm0, trim_upwash
 from .base import G0, NodeEvaluation, Output, ResidualGroup, State, Unknown
 from .config import VehicleConfig, WingConfig, disks_in_one_plane
 from .mass import MassDesign, solve_togw, total_mass
@@ -137,6 +138,11 @@ class Aircraft:
         transitions), within the tilting wings' ``tilt_range_deg``, at most their
         ``max_tilt_rate_degps``, continuous with the prescribed angle of the neighbouring
         segments; its rotors there are azimuth-averaged whatever the angle.
+    trim : pitch trim about the centre of gravity at every node of the segments with
+        ``pitch_trim`` > 0 (default all), the incidence of each all-moving surface
+        (``WingConfig.trim_incidence_range_deg``) a control there, the CG a design variable
+        held by the static margin (:mod:`mdo.vehicle.balance`); on by default, and inert
+        for a vehicle without such a surface (reported as untrimmed).
     Segments may set ``drag_device_area_m2`` (gear/flap drag on approach, a control),
     ``flap_deflection`` (0-1, raises the stall limit of flapped strips) and
     ``<group>.active`` (0: that rotor group stopped/folded there).
@@ -150,9 +156,9 @@ class Aircraft:
                  bounds: DesignBounds | None = None,
                  positions_free: bool | None = None, design_point_constraints: bool = True,
                  wing_stall: bool | None = None, slipstream_breaks: bool = False, wake_samples: int = 5,
-                 pitch: str = "control", tilt: str = "schedule"):
+                 pitch: str = "control", tilt: str = "schedule", trim: bool = True):
         self._check_options(config, free, coupling, mass_model, tip_mach_limit, swirl_recovery, wake_samples,
-                            stall_margin_cl, max_span_m, pitch, tilt)
+                            stall_margin_cl, max_span_m, pitch, tilt, trim)
         self.config = config
         self.name = config.name
         self.free = set(free)
@@ -186,8 +192,10 @@ class Aircraft:
                        for g in config.rotor_groups]
         self.parameters = {"wing_mounted_angle_rad": 0.0, "pitch_command_rad": 0.0, "drag_device_area_m2": 0.0,
                            "stall_margin_cl": self.stall_margin_cl, "flap_deflection": 0.0,
-                           "wing_tilt_control": 0.0}
+                           "wing_tilt_control": 0.0, "pitch_trim": 1.0}
         self.parameters.update({f"{g.name}.active": 1.0 for g in self.groups})
+        # pitch trim about the CG with the all-moving surfaces as controls (mdo.vehicle.balance)
+        self.trim_surfaces = list(config.trim_surfaces) if trim else []
         self.pack = config.battery.pack()
         self._problem = None
         self.togw_baseline_kg = solve_togw(config)
@@ -195,7 +203,7 @@ class Aircraft:
 
     @staticmethod
     def _check_options(config, free, coupling, mass_model, tip_mach_limit, swirl_recovery, wake_samples,
-                       stall_margin_cl, max_span_m, pitch="control", tilt="schedule"):
+                       stall_margin_cl, max_span_m, pitch="control", tilt="schedule", trim=True):
         if not isinstance(config, VehicleConfig):
             raise InputError("config", f"a VehicleConfig, got {type(config).__name__}")
         choices = {"coupling": (coupling, ("swirl", "freestream", "local")),
@@ -218,6 +226,9 @@ class Aircraft:
             raise InputError("max_span_m", f"in [0.5, 100] m, got {max_span_m!r}")
         if tilt == "control" and not any(w.tilting for w in config.wings):
             raise InputError("tilt", "'control' needs a wing with tilting=True (a tilt-wing)")
+        if trim and config.trim_surfaces and config.kind == "tilt_wing":
+            raise InputError("trim", "pitch trim of a tilt-wing is not modelled (the hub positions of tilting "
+                             "rotors, the post-stall strips' moment); use trim=False or no trim_incidence_range_deg")
 
     # ------------------------------------------------------------------ compatibility views
     @property
@@ -265,6 +276,8 @@ class Aircraft:
         self._build_geometry(problem)
         if self.design_point_constraints:
             self._no_overlap(problem)
+        if self.trim_surfaces:
+            self._add_balance(problem)
         self.bus = Bus(self.pack, [gm.motor_group(self.pack) for gm in self.groups],
                        aux_power_W=self.config.aux_power_W)
         self.powertrain = self.bus
@@ -397,9 +410,8 @@ class Aircraft:
         S_ref = sum(w.area_m2 for w in self.lifting_wings)
         lift_velocity = "freestream" if self.coupling == "freestream" else "local"
         surfaces, rotor_pos = self.wing_surfaces(self._symbolic_design())
-        self.vlm = VLM(surfaces, S_ref=S_ref, c_ref=main.mean_aerodynamic_chord_m, b_ref=main.span_m,
-                       r_ref=(main.root_le_x_m + 0.25 * main.mean_aerodynamic_chord_m, 0.0, main.root_z_m),
-                       mach_ref=0.2, lift_velocity=lift_velocity)
+        self.vlm = self._lattice(surfaces, S_ref, lift_velocity)
+        self.rotor_centres = rotor_pos
         self.group_rotors = {gm.name: self._rotors(gm, rotor_pos[gm.name], gm.design["R"]) for gm in self.groups}
         self.rotors = [r for gm in self.groups for r in self.group_rotors[gm.name]]
         self.rotor_positions = [p for gm in self.groups for p in rotor_pos[gm.name]]
@@ -411,13 +423,81 @@ class Aircraft:
         half_width = 0.5 * cfg.fuselage.width_m
         semis = {w.name: w.span_m / 2 for w in self.lifting_wings}
         names = [s_.name for s_ in self.vlm.surfaces]
-        self.strip_exposed = np.array([self.strip_eta[i] * semis.get(names[si], 0.0) > half_width
+        # (a tail sits on the narrow tail cone: all its strips are exposed)
+        self.strip_exposed = np.array([names[si] not in semis or self.strip_eta[i] * semis[names[si]] > half_width
                                        for i, si in enumerate(self.vlm.strip_surface)])
         self.bodies = self.body_list()
         self.nacelles = self.nacelle_bodies()
         self.fins = cfg.fins
         problem.output("wing_aspect_ratio", self.design["wings"][main.name]["span"] ** 2 / main.area_m2, unit="-",
                        summary=True)
+
+    def _lattice(self, surfaces, S_ref, lift_velocity="local"):
+        """The vehicle's lattice of ``surfaces``: references from the main wing's baseline."""
+        main = self.config.main_wing
+        return VLM(surfaces, S_ref=S_ref, c_ref=main.mean_aerodynamic_chord_m, b_ref=main.span_m,
+                   r_ref=(main.root_le_x_m + 0.25 * main.mean_aerodynamic_chord_m, 0.0, main.root_z_m),
+                   mach_ref=0.2, lift_velocity=lift_velocity)
+
+    def _add_balance(self, problem):
+        """The CG's x (a design variable: the battery's position sets it) and the static
+        margin requirement (:mod:`mdo.vehicle.balance`).  The baseline CG sits 5 % of MAC
+        ahead of the required margin, from the baseline's neutral point."""
+        cfg, main = self.config, self.config.main_wing
+        c0 = main.mean_aerodynamic_chord_m
+        x_np0 = float(neutral_point_x(self._lattice(self.wing_surfaces(self.numeric_design())[0], self.S_ref),
+                                      cfg.fuselage, cfg.cg_z_m))
+        init = x_np0 - (cfg.static_margin_min + 0.05) * c0
+        lo, up = (x_np0 - 1.0 * c0, x_np0 + 0.25 * c0) if "wing" in self.free else (init, init)
+        self.x_cg = problem.variable("cg_x", 1, unit="m", scale=c0, lower=lo, upper=up, init=init, design=True,
+                                     description="centre of gravity, x (body axes; set by the battery's position)")
+        dw = self.design["wings"][main.name]
+        mac = mean_aerodynamic_chord(main.area_m2, dw["span"], dw["taper"])
+        x_np = neutral_point_x(self.vlm, cfg.fuselage, cfg.cg_z_m)
+        margin = (x_np - self.x_cg) / mac
+        if self.design_point_constraints:
+            problem.constrain("static margin", margin - cfg.static_margin_min, kind=">=", scale=0.05, unit="-",
+                              labels=[f"(x_np - x_cg)/MAC - {cfg.static_margin_min:g}"])
+        problem.output("cg_x_m", self.x_cg, unit="m", summary=True)
+        problem.output("neutral_point_x_m", x_np, unit="m", summary=True)
+        problem.output("static_margin", margin, unit="-", summary=True)
+        self.strip_cm0 = section_cm0(self.vlm) if self.nchord == 1 else None
+
+    def _trim_unknowns(self):
+        """The incidence of each all-moving surface where the segment trims (``pitch_trim``)."""
+        out = []
+        for w in self.trim_surfaces:
+            lo, hi = (math.radians(x) for x in w.trim_incidence_range_deg)
+            out.append(Unknown(f"{w.name}.trim_incidence", unit="rad", scale=0.1, lower=lo, upper=hi,
+                               only_where="pitch_trim",
+                               description=f"{w.name} incidence added for pitch trim "
+                                           f"({w.trim_incidence_range_deg[0]:g} to {w.trim_incidence_range_deg[1]:g} deg)"))
+        return out
+
+    def _trim_upwash(self, unknowns, v_cp, V, vlm=None):
+        """The trim surfaces' incidence as an upwash at their control points."""
+        vlm = vlm or self.vlm
+        names = [s_.name for s_ in vlm.surfaces]
+        vz = v_cp[2]
+        for w in self.trim_surfaces:
+            vz = vz + trim_upwash(vlm, names.index(w.name), V, unknowns[f"{w.name}.trim_incidence"])
+        return (v_cp[0], v_cp[1], vz)
+
+    def pitching_moment(self, aero, rot, env):
+        """Nose-up moment about the CG at every node (N m, 1 x K; :mod:`mdo.vehicle.balance`)."""
+        rotors = []
+        for gm in self.groups:
+            o = rot[gm.name]
+            axis = self.rotor_axis_angle(gm, env["wma"])
+            rotors += [(x, z, o["T"], o["H"], axis, 2) for (x, _, z) in self.rotor_centres[gm.name]]
+        return pitching_moment_about_cg(self.vlm, aero["vlm"], env["rho"], env["V"], env["alpha"], self.x_cg,
+                                        self.config.cg_z_m, self.strip_cm0, self.config.fuselage, rotors)
+
+    def trim_nodes(self, parameters, K) -> np.ndarray:
+        """Nodes trimmed in pitch (bool, K): every node with ``pitch_trim`` > 0, if the vehicle trims."""
+        if not self.trim_surfaces:
+            return np.zeros(K, bool)
+        return _num(parameters.get("pitch_trim", _row(1.0, K))).ravel() * np.ones(K) > 0.0
 
     def _strip_eta(self) -> np.ndarray:
         """Each strip's position as a fraction of its surface's semispan (fixed by the layout)."""
@@ -481,6 +561,7 @@ class Aircraft:
                            upper=spec["upper"], description=spec["description"]))
         if self.tilt == "control":   # the wing-mounted angle where a segment lets it be a control
             out.append(self._tilt_unknown())
+        out += self._trim_unknowns()
         # gear/flap deployment: a control only where a segment allows a drag device
         out.append(Unknown("drag_device_deployment", unit="-", scale=1.0, lower=0.0, upper=1.0,
                            description="gear/flap deployment on approach (fraction of drag_device_area_m2)",
@@ -570,6 +651,12 @@ class Aircraft:
         residuals = [r_ for gm in self.groups for r_ in rot[gm.name]["residuals"]]
         residuals.append(ResidualGroup("power balance", po["power_balance_W"], scale=self.bus.power_scale_W,
                                        unit="W"))
+        trimmed = np.flatnonzero(self.trim_nodes(nodes.parameters, K))
+        if trimmed.size:
+            moment = self.pitching_moment(aero, rot, env)
+            residuals.append(ResidualGroup("pitch trim", moment[:, [int(k) for k in trimmed]],
+                                           scale=self.togw_baseline_kg * G0 * self.config.main_wing.mean_aerodynamic_chord_m,
+                                           unit="N m", row_labels=["moment about the CG"], columns=trimmed))
         if self.limits_on:
             residuals += operating_limits(self, nodes, rot, po, aero, env)
         out = node_outputs(self, nodes, rot, aero, po, env)
@@ -620,6 +707,8 @@ class Aircraft:
         v_axial, v_rest = influence_sum_parts(self.influences, gam_r, om_r, vw_r)
         v_cp = tuple(x + y for x, y in zip(v_axial, v_rest))
         v_cp = self._flap_upwash(nodes, v_cp, V)
+        if self.trim_surfaces:
+            v_cp = self._trim_upwash(unknowns, v_cp, V)
         v_b = v_rest if self.coupling == "swirl" else None
         mach = V / a_s
         wing_alpha = alpha + wma if self.config.kind == "tilt_wing" else alpha
@@ -640,7 +729,8 @@ class Aircraft:
         pd, L_stall, D_folded = b["pd"], b["L_stall"], b["D_folded"]
         D_device, deploy = self._drag_device(nodes, unknowns, q)
         D_parasite = b["D_parasite"] + D_device
-        return {"vlm": r, "pd": pd, "D": D_i + D_parasite, "L": r["L"] + L_stall, "D_i": D_i,
+        trim = {w.name: unknowns[f"{w.name}.trim_incidence"] for w in self.trim_surfaces}
+        return {"vlm": r, "pd": pd, "D": D_i + D_parasite, "trim_incidence": trim, "L": r["L"] + L_stall, "D_i": D_i,
                 "D_parasite": D_parasite, "D_device": D_device, "deploy": deploy, "q": q, "D_folded": D_folded,
                 "drag_terms": b["terms"],
                 "swirl_recovered_W": recovered, "swirl_available_W": available, "swirl_credit_W": credit}

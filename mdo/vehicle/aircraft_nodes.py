@@ -11,6 +11,7 @@ import casadi as ca
 import numpy as np
 
 from ..core import units as u
+from .balance import surface_lift_N
 from .base import Output, ResidualGroup
 from .stall import stall_margin_rows
 
@@ -60,7 +61,8 @@ def operating_limits(ac, nodes, rot, po, aero, env) -> list:
         # a frozen design cannot change its span loading: its analysis holds the strips
         # below cl_max itself (margin 0) and reports the margin it has (as the tip Mach)
         margin = np.where(margin >= 0.0, 0.0, margin)
-    expr, labels = stall_margin_rows(ac.vlm, aero["vlm"], ac.lifting_wings, ac.strip_eta, env["rho"],
+    # the lifting wings and the all-moving trim surfaces (a stabilator must not stall either)
+    expr, labels = stall_margin_rows(ac.vlm, aero["vlm"], ac.lifting_wings + ac.trim_surfaces, ac.strip_eta, env["rho"],
                                      env["V"], env["mu"], _row(margin), nodes.parameters.get(
                                          "flap_deflection", _row(0.0, K)), cols, exposed=ac.strip_exposed)
     if expr is not None:
@@ -119,6 +121,13 @@ def node_outputs(ac, nodes, rot, aero, po, env) -> dict:
         "cell_current_A": Output(po["cell_current_A"], "A"),
         "cell_voltage_V": Output(po["cell_voltage_V"], "V"),
     }
+    names = [s_.name for s_ in ac.vlm.surfaces]
+    for w in ac.trim_surfaces:
+        delta = aero["trim_incidence"][w.name]
+        out[f"{w.name}.trim_incidence_deg"] = Output(delta * _row(1.0, env["K"]) / u.DEG, "deg",
+                                                      f"{w.name}: incidence added for pitch trim")
+        out[f"{w.name}.lift_N"] = Output(surface_lift_N(ac.vlm, r, names.index(w.name), env["rho"], V), "N",
+                                         f"{w.name}: lift of the surface (negative: a download)")
     for i, gm in enumerate(ac.groups):
         o, mo, g = rot[gm.name], po["groups"][gm.name], gm.config
         tip = ca.sqrt((o["omega"] * gm.design["R"]) ** 2 + V * V) / env["a_s"]

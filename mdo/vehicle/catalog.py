@@ -105,6 +105,15 @@ def design_rpm_for_tip_mach(radius_m, speed_mps, altitude_m, tip_mach=0.6) -> fl
     return float(np.sqrt((tip_mach * a) ** 2 - speed_mps ** 2) / radius_m / u.RPM)
 
 
+# The P2006T's horizontal tail is an all-moving stabilator (SUAVE's X-57 model names it so):
+# its incidence is the pitch-trim control (mdo.vehicle.balance).  Its stops are not published
+# in the sources at hand: +-15 deg is a stated placeholder (the tail's stall margin binds first).
+GA_STABILATOR_RANGE_DEG = (-15.0, 15.0)
+# The CG's height: the P2006T's is not published either; 0.5 m is mid-cabin in this layout's
+# frame (wing root at z 1.01 m, tail at 0.25 m), an estimate.  Its x is a design variable.
+GA_CG_Z_M = 0.5
+
+
 def _ga_airframe():
     main = WingConfig("main_wing", span_m=11.4, area_m2=14.76, taper=0.70, section_eta=GA_SECTIONS,
                       twist_deg=(3.00, 2.75, 2.50, 2.25, 2.00), airfoil=GA_WING_AIRFOIL, role="main",
@@ -112,7 +121,8 @@ def _ga_airframe():
                       thickness_to_chord=0.12, root_le_x_m=2.93, root_z_m=1.01)
     htail = WingConfig("horizontal_tail", span_m=3.3, area_m2=2.54, taper=1.0, section_eta=(0.0, 1.0),
                        twist_deg=(0.0, 0.0), airfoil=TAIL_AIRFOIL, thickness_to_chord=0.12,
-                       root_le_x_m=7.7, root_z_m=0.25, role="horizontal_tail")
+                       root_le_x_m=7.7, root_z_m=0.25, role="horizontal_tail",
+                       trim_incidence_range_deg=GA_STABILATOR_RANGE_DEG)
     vtail = WingConfig("vertical_tail", span_m=1.854, area_m2=2.258, taper=0.6858 / 1.6764,
                        section_eta=(0.0, 1.0), twist_deg=(0.0, 0.0), airfoil=TAIL_AIRFOIL,
                        thickness_to_chord=0.12, sweep_quarter_chord_deg=25.0, root_le_x_m=6.75,
@@ -133,7 +143,7 @@ def ga2p(rotation: str = "inboard_up") -> VehicleConfig:
         x_ahead_of_le_m=0.93, z_below_wing_m=0.226, rotation=rotation, nacelle_wetted_area_m2=4.5)
     return VehicleConfig(
         "GA-2P", "airplane", wings=(main, htail, vtail), rotor_groups=(props,), fuselage=fus,
-        battery=BatteryConfig(120, 80), togw_reference_kg=3549 * u.LB,
+        battery=BatteryConfig(120, 80), togw_reference_kg=3549 * u.LB, cg_z_m=GA_CG_Z_M,
         mass_inputs={"airframe_calibration": GA_AIRFRAME_CALIBRATION, "main_gear_length_in": 24.0,
                      "nose_gear_length_in": 20.0, "uninstalled_avionics_lb": 40.0},
         notes=("X-57 Mod II airframe (P2006T wing and tails) per SUAVE's model; "
@@ -151,7 +161,7 @@ def ga8p(rotation: str = "inboard_up") -> VehicleConfig:
         x_ahead_of_le_m=0.56, z_below_wing_m=0.0, rotation=rotation, nacelle_wetted_area_m2=1.2)
     return VehicleConfig(
         "GA-8P", "airplane", wings=(main, htail, vtail), rotor_groups=(props,), fuselage=fus,
-        battery=BatteryConfig(120, 80), togw_reference_kg=3622 * u.LB,
+        battery=BatteryConfig(120, 80), togw_reference_kg=3622 * u.LB, cg_z_m=GA_CG_Z_M,
         mass_inputs={"airframe_calibration": GA_AIRFRAME_CALIBRATION, "main_gear_length_in": 24.0,
                      "nose_gear_length_in": 20.0, "uninstalled_avionics_lb": 40.0},
         notes=("Nacelles scaled to the 25 kW motors: ~1.2 m^2 wetted each.",))

@@ -66,6 +66,9 @@ class WingConfig:
     # retrieved 2026-12); a placeholder to replace by the actuator of the design at hand
     tilt_range_deg: tuple = (0.0, 90.0)
     max_tilt_rate_degps: float = 10.0
+    # an all-moving surface (a stabilator): its incidence, added to ``incidence_deg``, is the
+    # pitch-trim control at every trimmed node, within these stops (deg); None: fixed
+    trim_incidence_range_deg: tuple | None = None
 
     def __post_init__(self):
         if self.role not in WING_ROLES:
@@ -79,6 +82,13 @@ class WingConfig:
             raise InputError(f"{self.name}.tilt_range_deg", f"a pair (lower, upper) with -30 <= lower < upper "
                              f"<= 120 deg, got {self.tilt_range_deg!r}")
         check_range(f"{self.name}.max_tilt_rate_degps", self.max_tilt_rate_degps, 0.1, 180.0, "deg/s")
+        if self.trim_incidence_range_deg is not None:
+            r = tuple(float(x) for x in self.trim_incidence_range_deg)
+            if len(r) != 2 or not (-30.0 <= r[0] < 0.0 < r[1] <= 30.0):
+                raise InputError(f"{self.name}.trim_incidence_range_deg", f"a pair (lower, upper) with "
+                                 f"-30 <= lower < 0 < upper <= 30 deg, got {self.trim_incidence_range_deg!r}")
+            if self.role == "fin":
+                raise InputError(f"{self.name}.trim_incidence_range_deg", "a fin cannot trim in pitch")
         if self.tilting and self.role not in LIFTING_ROLES:
             raise InputError(f"{self.name}.tilting", f"only a main or tandem wing may tilt, this one is "
                              f"a {self.role}")
@@ -273,10 +283,16 @@ class FuselageConfig:
     height_m: float
     wetted_area_m2: float
     tail_arm_m: float               # wing quarter chord to horizontal tail quarter chord
+    # K_f of the fuselage's destabilizing moment, dCm/dalpha = K_f W_f^2 L_f / (c S) per deg
+    # (Raymer, Aircraft Design 6th ed., Eq. 16.25 and Fig. 16.14, after Gilruth & White, NACA
+    # TR 711): about 0.01 with the wing's root quarter chord near 30-35 % of the body length,
+    # rising to 0.02-0.03 near 50 %; 0.012 is read off that chart for the GA layouts, an estimate
+    pitching_moment_factor: float = 0.012
 
     def __post_init__(self):
         for k in ("length_m", "width_m", "height_m", "wetted_area_m2", "tail_arm_m"):
             check_positive(f"fuselage.{k}", getattr(self, k), "m" if k != "wetted_area_m2" else "m^2")
+        check_range("fuselage.pitching_moment_factor", self.pitching_moment_factor, 0.0, 0.1)
 
 
 @dataclass(frozen=True)
@@ -406,6 +422,12 @@ class VehicleConfig:
     cruise_speed_mps: float = 78.232   # 175 mph
     cruise_altitude_m: float = 762.0   # 2500 ft
     togw_reference_kg: float = 0.0     # Table 1 of the paper, for comparison only
+    # the centre of gravity's height (body z, m; its x is a design variable placed by the
+    # battery, mdo.vehicle.balance) and the smallest static margin allowed, a fraction of
+    # the main wing's MAC: 5 %, a usual minimum for a statically stable airplane (Raymer,
+    # Aircraft Design 6th ed., ch. 16) - a requirement the designer sets
+    cg_z_m: float = 0.0
+    static_margin_min: float = 0.05
     drag: AirframeDragConfig = field(default_factory=AirframeDragConfig)
     mass_inputs: dict = field(default_factory=dict)
     notes: tuple = ()
@@ -429,6 +451,8 @@ class VehicleConfig:
             raise InputError("drag", f"an AirframeDragConfig, got {type(self.drag).__name__}")
         check_positive("cruise_speed_mps", self.cruise_speed_mps, "m/s")
         check_range("cruise_altitude_m", self.cruise_altitude_m, 0.0, 20000.0, "m")
+        check_range("static_margin_min", self.static_margin_min, -0.5, 0.5)
+        check_range("cg_z_m", self.cg_z_m, -20.0, 20.0, "m")
         names = {w.name for w in self.wings}
         disks = {}
         for g in self.rotor_groups:
@@ -477,6 +501,11 @@ class VehicleConfig:
     @property
     def horizontal_tails(self) -> list:
         return [w for w in self.wings if w.role == "horizontal_tail"]
+
+    @property
+    def trim_surfaces(self) -> list:
+        """The all-moving surfaces (``trim_incidence_range_deg`` set): the pitch-trim controls."""
+        return [w for w in self.wings if w.trim_incidence_range_deg is not None]
 
     @property
     def fins(self) -> list:
