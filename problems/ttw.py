@@ -43,7 +43,12 @@ tilt: without a cabin-attitude limit the tilt only moves the cabin.  ``cabin_att
 bounds the body's pitch attitude to +-that many degrees at every node (passenger comfort, a
 choice; default: the mission's -60/+85 deg).
 
-Options (``-o KEY=VALUE``): ``nodes`` per segment (6), ``pitch`` (control), ``cruise_distance_nmi`` (50),
+Pitch trim (``trim``, default on): in the wing-borne segments (CL ... RD) the moment about
+the CG is zero, with the front wing's incidence as the control (``mdo.vehicle.balance``) and
+the CG a design variable held by a 5 % static margin; the hover and transition segments are
+not trimmed (their tilted rotors' hub positions and post-stall moments are not modelled).
+
+Options (``-o KEY=VALUE``): ``nodes`` per segment (6), ``pitch`` (control), ``trim`` (true), ``cruise_distance_nmi`` (50),
 ``reserve_cruise_distance_nmi`` (5), ``cruise_altitude_ft``, ``cruise_speed_mph``,
 ``cells_series``/``cells_parallel`` (150/140), ``max_cell_current_A`` (15) and ``max_charge_current_A`` (4, above), ``swirl_recovery``, ``limits``,
 ``tip_mach_limit``, ``allow_regeneration`` (on here, above), ``n_stations`` (16), ``n_azimuth`` (4, transition
@@ -104,7 +109,7 @@ def relaxed_start(run_dir, solution: dict) -> dict:
     return solution
 
 
-def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 50.0,
+def build(analysis: bool = False, trim: bool = True, nodes: int = 6, cruise_distance_nmi: float = 50.0,
           reserve_cruise_distance_nmi: float = 5.0, cruise_altitude_ft: float = 2500.0,
           cruise_speed_mph: float = 175.0, cells_series: int = 150, cells_parallel: int = 140,
           max_cell_current_A: float = 15.0, max_charge_current_A: float = 4.0,
@@ -123,7 +128,7 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
                   cruise_speed_mps=cruise_speed_mph * MPH, cruise_altitude_m=cruise_altitude_ft * FT)
     cfg = airframe_variant(cfg, motor_model, sections, leakage_fraction, nacelle_slipstream, cooling_drag,
                            airframe_calibration)
-    vehicle = Aircraft(cfg, n_stations=n_stations, n_azimuth=n_azimuth, wing_strips=wing_strips,
+    vehicle = Aircraft(cfg, trim=trim, n_stations=n_stations, n_azimuth=n_azimuth, wing_strips=wing_strips,
                        mass_model=mass_model, coupling=coupling, swirl_recovery=swirl_recovery, limits=limits,
                        tip_mach_limit=tip_mach_limit, allow_regeneration=allow_regeneration,
                        design_point_constraints=not analysis, wake_samples=wake_samples, pitch=pitch, tilt=tilt)

@@ -9,7 +9,7 @@ import pytest
 from mdo.core import units as u
 from mdo.core.errors import InputError
 from mdo.mission import Mission
-from mdo.mission.segments import ConstantSpeedConstantAltitude, LinearSpeedConstantRate
+from mdo.mission.segments import ConstantSpeedConstantAltitude, LinearSpeedConstantRate, VerticalAscent
 from mdo.nlp import Problem
 from mdo.vehicle.aircraft import Aircraft
 from mdo.vehicle.balance import neutral_point_x, pitching_moment_about_cg
@@ -119,8 +119,15 @@ def test_trim_input_errors():
     cfg = ttw()
     wings = tuple(replace(w, trim_incidence_range_deg=(-10.0, 10.0)) if w.role == "tandem" else w
                   for w in cfg.wings)
-    with pytest.raises(InputError, match="tilt-wing"):
-        Aircraft(replace(cfg, wings=wings))
-    Aircraft(replace(cfg, wings=wings), trim=False)    # allowed off
+    # a tilt-wing trims where its wings are level; a tilted segment must say pitch_trim = 0
+    hover = VerticalAscent("VC", altitude_start_m=0.0, altitude_end_m=10.0, climb_rate_mps=1.5, nodes=3,
+                           parameters={"wing_mounted_angle_rad": math.pi / 2})
+    with pytest.raises(InputError, match="tilt-wing trims in pitch only where its wings are level"):
+        Mission(Aircraft(replace(cfg, wings=wings), **SMALL), [hover]).build(Problem("t"))
+    hover = VerticalAscent("VC", altitude_start_m=0.0, altitude_end_m=10.0, climb_rate_mps=1.5, nodes=3,
+                           parameters={"wing_mounted_angle_rad": math.pi / 2, "pitch_trim": 0.0})
+    p = Problem("t")
+    Mission(Aircraft(replace(cfg, wings=wings), **SMALL), [hover]).build(p)
+    assert "pitch trim" not in p.groups
     with pytest.raises(InputError, match="static_margin_min"):
         replace(ga2p(), static_margin_min=0.9)

@@ -215,7 +215,9 @@ def evtol_segments(*, cruise_distance_m: float = 50 * NMI, reserve_cruise_distan
     linear pitch schedule.  ``cruise_altitude_m``/``cruise_speed_mps``: where CL ends
     and CR flies (Table 5: 2500 ft, 175 mph).  The transition segments (VC, VT,
     CT1, CT2, AT, DT, VD) keep the wing's post-stall model and carry no stall limit
-    (``stall_margin_cl`` = -1); the wing-borne segments do.  VT, CT1, CT2, AT and DT
+    (``stall_margin_cl`` = -1) and are not trimmed in pitch (``pitch_trim`` = 0: the
+    tilted rotors' hub positions and the post-stall strips' moment are not modelled);
+    the wing-borne segments carry both.  VT, CT1, CT2, AT and DT
     set ``wing_tilt_control`` = 1: with ``Aircraft(tilt="control")`` their wing-mounted
     angle is a control (Table 5's WMA is then the initial guess only).
     """
@@ -226,8 +228,9 @@ def evtol_segments(*, cruise_distance_m: float = 50 * NMI, reserve_cruise_distan
 
     def p(wma, bc, transition=False, tilt=False):
         out = {"wing_mounted_angle_rad": wma * DEG, "pitch_command_rad": bc * DEG}
-        if transition:
+        if transition:   # post-stall strips, no stall limit; not trimmed in pitch (mdo.vehicle.balance)
             out["stall_margin_cl"] = -1.0
+            out["pitch_trim"] = 0.0
         if tilt:   # where Aircraft(tilt="control") flies the wing-mounted angle as a control
             out["wing_tilt_control"] = 1.0
         return out

@@ -62,7 +62,9 @@ STANDARD_PARAMETERS = {"wing_mounted_angle_rad": 0.0, "pitch_command_rad": 0.0,
                        # limit, e.g. tilt-wing transitions); a vehicle without these ignores them
                        "flap_deflection": 0.0, "stall_margin_cl": 0.1,
                        # 1 where a tilt-wing may fly its wing-mounted angle as a control
-                       "wing_tilt_control": 0.0}
+                       "wing_tilt_control": 0.0,
+                       # 0 where a vehicle that trims in pitch does not (mdo.vehicle.balance)
+                       "pitch_trim": 1.0}
 
 
 @dataclass

@@ -4,9 +4,10 @@
 residual groups, the batched node evaluation); ``polar`` is a simple vehicle with
 a fixed drag polar and fixed efficiencies, for quick studies and tests;
 ``config``/``catalog`` hold the numbers of the paper's aircraft (GA-2P, GA-8P,
-TTW) and ``mass`` the mass build-up that responds to the design variables.
+TTW) and ``mass`` the mass build-up that responds to the design variables;
+``balance`` the pitching moment about the CG, the neutral point and pitch trim.
 """
-from . import base, catalog, config, mass, polar
+from . import balance, base, catalog, config, mass, polar
 from .base import (
     G0,
     NodeConditions,
@@ -25,7 +26,7 @@ from .mass import MassDesign, mass_table_markdown, mass_terms, solve_togw, togw_
 from .polar import PolarVehicle
 
 __all__ = [
-    "base", "polar",
+    "balance", "base", "polar",
     "G0", "NodeConditions", "NodeEvaluation", "Output", "ResidualGroup", "State", "Unknown", "Vehicle",
     "path_components", "rotate_to_path",
     "PolarVehicle",

@@ -226,9 +226,6 @@ class Aircraft:
             raise InputError("max_span_m", f"in [0.5, 100] m, got {max_span_m!r}")
         if tilt == "control" and not any(w.tilting for w in config.wings):
             raise InputError("tilt", "'control' needs a wing with tilting=True (a tilt-wing)")
-        if trim and config.trim_surfaces and config.kind == "tilt_wing":
-            raise InputError("trim", "pitch trim of a tilt-wing is not modelled (the hub positions of tilting "
-                             "rotors, the post-stall strips' moment); use trim=False or no trim_incidence_range_deg")
 
     # ------------------------------------------------------------------ compatibility views
     @property
@@ -440,15 +437,22 @@ class Aircraft:
                    mach_ref=0.2, lift_velocity=lift_velocity)
 
     def _add_balance(self, problem):
-        """The CG's x (a design variable: the battery's position sets it) and the static
-        margin requirement (:mod:`mdo.vehicle.balance`).  The baseline CG sits 5 % of MAC
-        ahead of the required margin, from the baseline's neutral point."""
+        """The CG's x (a design variable: the battery's position sets it, within
+        ``VehicleConfig.cg_x_range_m``) and the static margin requirement
+        (:mod:`mdo.vehicle.balance`).  The baseline CG sits 5 % of MAC ahead of the required
+        margin, from the baseline's neutral point, or at the end of the range nearest it."""
         cfg, main = self.config, self.config.main_wing
         c0 = main.mean_aerodynamic_chord_m
         x_np0 = float(neutral_point_x(self._lattice(self.wing_surfaces(self.numeric_design())[0], self.S_ref),
                                       cfg.fuselage, cfg.cg_z_m))
-        init = x_np0 - (cfg.static_margin_min + 0.05) * c0
-        lo, up = (x_np0 - 1.0 * c0, x_np0 + 0.25 * c0) if "wing" in self.free else (init, init)
+        if cfg.cg_x_range_m is not None:
+            lo, up = (float(x) for x in cfg.cg_x_range_m)
+        else:   # the main wing's MAC, 0-50 % (unswept quarter chord: its leading edge at (c_r - c)/4)
+            x_le = main.root_le_x_m + 0.25 * (main.root_chord_m - c0)
+            lo, up = x_le, x_le + 0.5 * c0
+        init = float(np.clip(x_np0 - (cfg.static_margin_min + 0.05) * c0, lo, up))
+        if "wing" not in self.free:
+            lo = up = init
         self.x_cg = problem.variable("cg_x", 1, unit="m", scale=c0, lower=lo, upper=up, init=init, design=True,
                                      description="centre of gravity, x (body axes; set by the battery's position)")
         dw = self.design["wings"][main.name]
@@ -652,6 +656,11 @@ class Aircraft:
         residuals.append(ResidualGroup("power balance", po["power_balance_W"], scale=self.bus.power_scale_W,
                                        unit="W"))
         trimmed = np.flatnonzero(self.trim_nodes(nodes.parameters, K))
+        tilted = (np.abs(env["wma_schedule"]) > 1e-9) | env["tilt_nodes"]
+        if self.config.kind == "tilt_wing" and np.any(tilted[trimmed]):
+            raise InputError("pitch_trim", "a tilt-wing trims in pitch only where its wings are level (the "
+                             "tilted rotors' hub positions and the post-stall strips' moment are not "
+                             "modelled): set pitch_trim = 0 in the segments that tilt, as evtol_segments does")
         if trimmed.size:
             moment = self.pitching_moment(aero, rot, env)
             residuals.append(ResidualGroup("pitch trim", moment[:, [int(k) for k in trimmed]],

@@ -167,12 +167,23 @@ def ga8p(rotation: str = "inboard_up") -> VehicleConfig:
         notes=("Nacelles scaled to the 25 kW motors: ~1.2 m^2 wetted each.",))
 
 
+# The TTW trims in pitch in wing-borne flight with its front wing's incidence: each wing has its
+# own tilt actuator, so the front wing can be set a few degrees off the rear one (our layout's
+# choice; +-10 deg stops, a placeholder).  Its CG height, 0.8 m, lies between the wings' roots
+# (0.4 and 1.6 m), an estimate; its x is a design variable (mdo.vehicle.balance).
+TTW_FRONT_WING_TRIM_RANGE_DEG = (-10.0, 10.0)
+TTW_CG_Z_M = 0.8
+# a tandem balances between its wings: the CG may lie anywhere between their quarter chords
+TTW_CG_X_RANGE_M = (0.6 + 0.25 * 1.13, 4.6 + 0.25 * 1.13)
+
+
 def ttw(rotation: str = "inboard_up") -> VehicleConfig:
     """TTW: tandem tilt-wing eVTOL with eight 3-bladed rotors on two tilting wings."""
     sections = GA_SECTIONS
     tandem = WingConfig("tandem_wing", span_m=9.6, area_m2=10.85, taper=1.0, section_eta=sections,
                         twist_deg=(4.0, 3.0, 2.0, 1.0, 0.0), airfoil=GA_WING_AIRFOIL,
-                        thickness_to_chord=0.12, root_le_x_m=0.6, root_z_m=0.4, tilting=True, role="tandem")
+                        thickness_to_chord=0.12, root_le_x_m=0.6, root_z_m=0.4, tilting=True, role="tandem",
+                        trim_incidence_range_deg=TTW_FRONT_WING_TRIM_RANGE_DEG)
     main = WingConfig("main_wing", span_m=9.6, area_m2=10.85, taper=1.0, section_eta=sections,
                       twist_deg=(4.0, 3.0, 2.0, 1.0, 0.0), airfoil=GA_WING_AIRFOIL,
                       thickness_to_chord=0.12, root_le_x_m=4.6, root_z_m=1.6, tilting=True, role="main")
@@ -191,7 +202,8 @@ def ttw(rotation: str = "inboard_up") -> VehicleConfig:
     fus = FuselageConfig(length_m=6.1, width_m=1.3, height_m=1.5, wetted_area_m2=20.0, tail_arm_m=4.0)
     return VehicleConfig(
         "TTW", "tilt_wing", wings=(main, tandem, fin), rotor_groups=(rotors,), fuselage=fus,
-        battery=BatteryConfig(150, 120), togw_reference_kg=4850 * u.LB,
+        battery=BatteryConfig(150, 120), togw_reference_kg=4850 * u.LB, cg_z_m=TTW_CG_Z_M,
+        cg_x_range_m=TTW_CG_X_RANGE_M,
         mass_inputs={"airframe_calibration": TTW_AIRFRAME_CALIBRATION, "main_gear_length_in": 12.0,
                      "nose_gear_length_in": 12.0, "uninstalled_avionics_lb": 60.0},
         notes=("Tilt-wing layout (wing positions, fuselage size, fin) is ours: the paper gives only "

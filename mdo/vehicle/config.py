@@ -428,6 +428,10 @@ class VehicleConfig:
     # Aircraft Design 6th ed., ch. 16) - a requirement the designer sets
     cg_z_m: float = 0.0
     static_margin_min: float = 0.05
+    # where the layout can put the CG (x, m; the battery moves it within this range): None is
+    # the main wing's mean aerodynamic chord from 0 to 50 % (an airplane balances on its wing;
+    # light aircraft fly between about 15 and 35 % MAC); a tandem or canard states its own
+    cg_x_range_m: tuple | None = None
     drag: AirframeDragConfig = field(default_factory=AirframeDragConfig)
     mass_inputs: dict = field(default_factory=dict)
     notes: tuple = ()
@@ -453,6 +457,11 @@ class VehicleConfig:
         check_range("cruise_altitude_m", self.cruise_altitude_m, 0.0, 20000.0, "m")
         check_range("static_margin_min", self.static_margin_min, -0.5, 0.5)
         check_range("cg_z_m", self.cg_z_m, -20.0, 20.0, "m")
+        if self.cg_x_range_m is not None:
+            r = tuple(float(x) for x in self.cg_x_range_m)
+            if len(r) != 2 or not (-50.0 <= r[0] < r[1] <= 100.0):
+                raise InputError("cg_x_range_m", f"a pair (forward, aft) in m with forward < aft, got "
+                                 f"{self.cg_x_range_m!r}")
         names = {w.name for w in self.wings}
         disks = {}
         for g in self.rotor_groups:
