@@ -27,7 +27,7 @@ OPTIONS = {**AIRCRAFT_OPTIONS, **AIRFRAME_OPTIONS, **TRAJECTORY_OPTIONS,
 }
 
 
-def build(analysis: bool = False, trim: bool = True, nodes: int = 6, cruise_distance_nmi: float = 50.0,
+def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 50.0,
           reserve_cruise_distance_nmi: float = 5.0, cruise_altitude_ft: float = 2500.0,
           cruise_speed_mph: float = 175.0, cells_series: int = 120, cells_parallel: int = 80,
           n_stations: int = 16, wing_strips: int = 24, mass_model: str = "buildup", rotation: str = "inboard_up",
@@ -36,7 +36,8 @@ def build(analysis: bool = False, trim: bool = True, nodes: int = 6, cruise_dist
           approach_drag_area_m2: float = 0.40, wake_samples: int = 5, trajectory: str = "prescribed",
           max_block_time_min: float | None = None,
           motor_model: str = "pmsm", sections: str = "as_defined", leakage_fraction: float | None = None,
-          nacelle_slipstream: bool = True, cooling_drag: bool = True, airframe_calibration: float | None = None):
+          nacelle_slipstream: bool = True, cooling_drag: bool = True, airframe_calibration: float | None = None,
+          trim: bool = True):
     p = Problem("ga8p", "GA-8P whole-mission optimization (Clarke et al. Eq. 7)")
     cfg = ga8p(rotation)
     cfg = replace(cfg, battery=replace(cfg.battery, cells_series=cells_series, cells_parallel=cells_parallel),

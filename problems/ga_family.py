@@ -64,13 +64,13 @@ def family_config(n_props: int, rotation: str = "inboard_up"):
                    notes=(f"GA family, {n_props} propellers (problems/ga_family.py)",)), r_max
 
 
-def build(analysis: bool = False, trim: bool = True, n_props: int = 8, nodes: int = 6, cruise_distance_nmi: float = 50.0,
+def build(analysis: bool = False, n_props: int = 8, nodes: int = 6, cruise_distance_nmi: float = 50.0,
           reserve_cruise_distance_nmi: float = 5.0, cruise_altitude_ft: float = 2500.0,
           cruise_speed_mph: float = 175.0, cells_series: int = 120, cells_parallel: int = 80,
           n_stations: int = 16, wing_strips: int = 24, mass_model: str = "buildup", rotation: str = "inboard_up",
           coupling: str = "swirl", swirl_recovery: str = "bounded", limits: bool = True,
           tip_mach_limit: str = "nodes", allow_regeneration: bool = False, max_span_m: float | None = None,
-          approach_drag_area_m2: float = 0.40, wake_samples: int = 5):
+          approach_drag_area_m2: float = 0.40, wake_samples: int = 5, trim: bool = True):
     cfg, _ = family_config(n_props, rotation)
     cfg = replace(cfg, battery=replace(cfg.battery, cells_series=cells_series, cells_parallel=cells_parallel),
                   cruise_speed_mps=cruise_speed_mph * MPH, cruise_altitude_m=cruise_altitude_ft * FT)

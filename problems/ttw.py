@@ -109,7 +109,7 @@ def relaxed_start(run_dir, solution: dict) -> dict:
     return solution
 
 
-def build(analysis: bool = False, trim: bool = True, nodes: int = 6, cruise_distance_nmi: float = 50.0,
+def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 50.0,
           reserve_cruise_distance_nmi: float = 5.0, cruise_altitude_ft: float = 2500.0,
           cruise_speed_mph: float = 175.0, cells_series: int = 150, cells_parallel: int = 140,
           max_cell_current_A: float = 15.0, max_charge_current_A: float = 4.0,
@@ -119,7 +119,7 @@ def build(analysis: bool = False, trim: bool = True, nodes: int = 6, cruise_dist
           wake_samples: int = 5, tol: float = 1e-4, pitch: str = "control",
           motor_model: str = "pmsm", sections: str = "as_defined", leakage_fraction: float | None = None,
           nacelle_slipstream: bool = True, cooling_drag: bool = True, airframe_calibration: float | None = None,
-          tilt: str = "schedule", cabin_attitude_deg: float | None = None):
+          tilt: str = "schedule", cabin_attitude_deg: float | None = None, trim: bool = True):
     p = Problem("ttw", "TTW tandem tilt-wing whole-mission optimization (Clarke et al. Eq. 7)")
     cfg = ttw(rotation)
     cfg = replace(cfg, battery=replace(cfg.battery, cells_series=cells_series, cells_parallel=cells_parallel,
