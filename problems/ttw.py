@@ -48,7 +48,8 @@ the CG is zero, with the front wing's incidence as the control (``mdo.vehicle.ba
 the CG a design variable held by a 5 % static margin; the hover and transition segments are
 not trimmed (their tilted rotors' hub positions and post-stall moments are not modelled).
 
-Options (``-o KEY=VALUE``): ``nodes`` per segment (6), ``pitch`` (control), ``trim`` (true), ``cruise_distance_nmi`` (50),
+Options (``-o KEY=VALUE``): ``nodes`` per segment (6), ``pitch`` (control), ``trim`` (true),
+``cruise_distance_nmi`` (50),
 ``reserve_cruise_distance_nmi`` (5), ``cruise_altitude_ft``, ``cruise_speed_mph``,
 ``cells_series``/``cells_parallel`` (150/140), ``max_cell_current_A`` (15) and ``max_charge_current_A`` (4, above), ``swirl_recovery``, ``limits``,
 ``tip_mach_limit``, ``allow_regeneration`` (on here, above), ``n_stations`` (16), ``n_azimuth`` (4, transition

@@ -472,10 +472,10 @@ class Aircraft:
         out = []
         for w in self.trim_surfaces:
             lo, hi = (math.radians(x) for x in w.trim_incidence_range_deg)
+            a, b = w.trim_incidence_range_deg
             out.append(Unknown(f"{w.name}.trim_incidence", unit="rad", scale=0.1, lower=lo, upper=hi,
                                only_where="pitch_trim",
-                               description=f"{w.name} incidence added for pitch trim "
-                                           f"({w.trim_incidence_range_deg[0]:g} to {w.trim_incidence_range_deg[1]:g} deg)"))
+                               description=f"{w.name} incidence added for pitch trim ({a:g} to {b:g} deg)"))
         return out
 
     def _trim_upwash(self, unknowns, v_cp, V, vlm=None):
@@ -661,10 +661,10 @@ class Aircraft:
             raise InputError("pitch_trim", "a tilt-wing trims in pitch only where its wings are level (the "
                              "tilted rotors' hub positions and the post-stall strips' moment are not "
                              "modelled): set pitch_trim = 0 in the segments that tilt, as evtol_segments does")
-        if trimmed.size:
+        if trimmed.size:   # scaled by the weight times the main wing's MAC
             moment = self.pitching_moment(aero, rot, env)
-            residuals.append(ResidualGroup("pitch trim", moment[:, [int(k) for k in trimmed]],
-                                           scale=self.togw_baseline_kg * G0 * self.config.main_wing.mean_aerodynamic_chord_m,
+            scale = self.togw_baseline_kg * G0 * self.config.main_wing.mean_aerodynamic_chord_m
+            residuals.append(ResidualGroup("pitch trim", moment[:, [int(k) for k in trimmed]], scale=scale,
                                            unit="N m", row_labels=["moment about the CG"], columns=trimmed))
         if self.limits_on:
             residuals += operating_limits(self, nodes, rot, po, aero, env)
