@@ -109,6 +109,10 @@ def main():
                              (d_an["wings"][w]["twist_deg"][i], d_opt["wings"][w]["twist_deg"][i]), "{:.2f}"))
         rows.append(("Take-off gross weight (kg; paper: fixed)", (None, None), (d_an["togw_kg"], d_opt["togw_kg"]),
                      "{:.1f}"))
+        for key, label, fmt in (("cg_x_m", "CG x (m; pitch trim, not in the paper)", "{:.3f}"),
+                                ("static_margin", "Static margin (fraction of MAC)", "{:.3f}")):
+            if key in s_an:
+                rows.append((label, (None, None), (s_an[key], None if s_opt is None else s_opt.get(key)), fmt))
 
         def f(x, fmt):
             if fmt == "fixed":
