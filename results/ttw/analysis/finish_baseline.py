@@ -1,13 +1,13 @@
-"""How results/ttw/analysis/ was made (2026-12-03, main 46fab24), from the repository root:
+"""How results/ttw/analysis/ (the trimmed baseline) was made (2026-12-03), from the repository root:
 
     python results/ttw/analysis/finish_baseline.py OUT_DIR
 
-The TTW baseline analysis (Table 3's design frozen, every limit on) started from the last
-iterate of the unconverged attempt of 2026-12-02 (results/ttw/drag_pmsm_attempt/, feasible,
-dual infeasibility noisy between 1e-3 and 4 under the adaptive barrier), without its
-multipliers, with the monotone barrier held from mu = 1e-5 and the bounds pushed in by
-1e-8 only (as results/ttw/acceptable/finish.py): converged ("Optimal Solution Found",
-tol 1e-4) in 18 iterations.  `mdo run problems/ttw.py --analysis` from scratch does not
+The TTW baseline with pitch trim in its wing-borne segments (mdo/vehicle/balance.py; the CG
+frozen at a 10 % static margin) started from the converged untrimmed baseline
+(results/ttw/untrimmed/analysis/solution.json, every variable but the front wing's trim
+incidence, which starts at 0), without multipliers, with the monotone barrier from
+mu = 1e-4 and the bounds pushed in by 1e-8 only: "Optimal Solution Found" in 26
+iterations, 171.53 kWh.  `mdo run problems/ttw.py --analysis` from scratch does not
 converge (results/ttw/README.md).
 """
 import sys
@@ -15,7 +15,7 @@ import sys
 from mdo.nlp.run import load_problem_file, solve_into
 
 p = load_problem_file("problems/ttw.py", analysis=True, options={})
-p.warm_start("results/ttw/drag_pmsm_attempt/solution.json", multipliers=False)
-p.ipopt_options.update({"mu_strategy": "monotone", "mu_init": 1e-5, "bound_push": 1e-8, "bound_frac": 1e-8})
-sol = solve_into(p, sys.argv[1], verbose=True, max_iter=100)
+print(p.warm_start("results/ttw/untrimmed/analysis/solution.json", multipliers=False, partial=True).describe())
+p.ipopt_options.update({"mu_strategy": "monotone", "mu_init": 1e-4, "bound_push": 1e-8, "bound_frac": 1e-8})
+sol = solve_into(p, sys.argv[1], verbose=True, max_iter=150)
 print(sol.status, sol.iterations, sol.objective, flush=True)
