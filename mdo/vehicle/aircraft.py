@@ -69,7 +69,7 @@ from ..wing import VLM, Body, body_drag, constant_area, profile_drag, trapezoid
 from ..wing.buildup import CP_AIR
 from ..wing.drag import form_factor_wing, skin_friction
 from .aircraft_nodes import _num, _row, node_outputs, operating_limits
-from .balance import mean_aerodynamic_chord, neutral_point_x, pitching_moment_about_cg, section_cm0, trim_upwash
+from .balance import add_balance, trim_residuals, trim_unknowns, trim_upwash
 from .base import G0, NodeEvaluation, Output, ResidualGroup, State, Unknown
 from .config import VehicleConfig, WingConfig, disks_in_one_plane
 from .mass import MassDesign, solve_togw, total_mass
@@ -274,7 +274,7 @@ class Aircraft:
         if self.design_point_constraints:
             self._no_overlap(problem)
         if self.trim_surfaces:
-            self._add_balance(problem)
+            add_balance(self, problem)
         self.bus = Bus(self.pack, [gm.motor_group(self.pack) for gm in self.groups],
                        aux_power_W=self.config.aux_power_W)
         self.powertrain = self.bus
@@ -436,73 +436,6 @@ class Aircraft:
                    r_ref=(main.root_le_x_m + 0.25 * main.mean_aerodynamic_chord_m, 0.0, main.root_z_m),
                    mach_ref=0.2, lift_velocity=lift_velocity)
 
-    def _add_balance(self, problem):
-        """The CG's x (a design variable: the battery's position sets it, within
-        ``VehicleConfig.cg_x_range_m``) and the static margin requirement
-        (:mod:`mdo.vehicle.balance`).  The baseline CG sits 5 % of MAC ahead of the required
-        margin, from the baseline's neutral point, or at the end of the range nearest it."""
-        cfg, main = self.config, self.config.main_wing
-        c0 = main.mean_aerodynamic_chord_m
-        x_np0 = float(neutral_point_x(self._lattice(self.wing_surfaces(self.numeric_design())[0], self.S_ref),
-                                      cfg.fuselage, cfg.cg_z_m))
-        if cfg.cg_x_range_m is not None:
-            lo, up = (float(x) for x in cfg.cg_x_range_m)
-        else:   # the main wing's MAC, 0-50 % (unswept quarter chord: its leading edge at (c_r - c)/4)
-            x_le = main.root_le_x_m + 0.25 * (main.root_chord_m - c0)
-            lo, up = x_le, x_le + 0.5 * c0
-        init = float(np.clip(x_np0 - (cfg.static_margin_min + 0.05) * c0, lo, up))
-        if "wing" not in self.free:
-            lo = up = init
-        self.x_cg = problem.variable("cg_x", 1, unit="m", scale=c0, lower=lo, upper=up, init=init, design=True,
-                                     description="centre of gravity, x (body axes; set by the battery's position)")
-        dw = self.design["wings"][main.name]
-        mac = mean_aerodynamic_chord(main.area_m2, dw["span"], dw["taper"])
-        x_np = neutral_point_x(self.vlm, cfg.fuselage, cfg.cg_z_m)
-        margin = (x_np - self.x_cg) / mac
-        if self.design_point_constraints:
-            problem.constrain("static margin", margin - cfg.static_margin_min, kind=">=", scale=0.05, unit="-",
-                              labels=[f"(x_np - x_cg)/MAC - {cfg.static_margin_min:g}"])
-        problem.output("cg_x_m", self.x_cg, unit="m", summary=True)
-        problem.output("neutral_point_x_m", x_np, unit="m", summary=True)
-        problem.output("static_margin", margin, unit="-", summary=True)
-        self.strip_cm0 = section_cm0(self.vlm) if self.nchord == 1 else None
-
-    def _trim_unknowns(self):
-        """The incidence of each all-moving surface where the segment trims (``pitch_trim``)."""
-        out = []
-        for w in self.trim_surfaces:
-            lo, hi = (math.radians(x) for x in w.trim_incidence_range_deg)
-            a, b = w.trim_incidence_range_deg
-            out.append(Unknown(f"{w.name}.trim_incidence", unit="rad", scale=0.1, lower=lo, upper=hi,
-                               only_where="pitch_trim",
-                               description=f"{w.name} incidence added for pitch trim ({a:g} to {b:g} deg)"))
-        return out
-
-    def _trim_upwash(self, unknowns, v_cp, V, vlm=None):
-        """The trim surfaces' incidence as an upwash at their control points."""
-        vlm = vlm or self.vlm
-        names = [s_.name for s_ in vlm.surfaces]
-        vz = v_cp[2]
-        for w in self.trim_surfaces:
-            vz = vz + trim_upwash(vlm, names.index(w.name), V, unknowns[f"{w.name}.trim_incidence"])
-        return (v_cp[0], v_cp[1], vz)
-
-    def pitching_moment(self, aero, rot, env):
-        """Nose-up moment about the CG at every node (N m, 1 x K; :mod:`mdo.vehicle.balance`)."""
-        rotors = []
-        for gm in self.groups:
-            o = rot[gm.name]
-            axis = self.rotor_axis_angle(gm, env["wma"])
-            rotors += [(x, z, o["T"], o["H"], axis, 2) for (x, _, z) in self.rotor_centres[gm.name]]
-        return pitching_moment_about_cg(self.vlm, aero["vlm"], env["rho"], env["V"], env["alpha"], self.x_cg,
-                                        self.config.cg_z_m, self.strip_cm0, self.config.fuselage, rotors)
-
-    def trim_nodes(self, parameters, K) -> np.ndarray:
-        """Nodes trimmed in pitch (bool, K): every node with ``pitch_trim`` > 0, if the vehicle trims."""
-        if not self.trim_surfaces:
-            return np.zeros(K, bool)
-        return _num(parameters.get("pitch_trim", _row(1.0, K))).ravel() * np.ones(K) > 0.0
-
     def _strip_eta(self) -> np.ndarray:
         """Each strip's position as a fraction of its surface's semispan (fixed by the layout)."""
         surfaces, _ = self.wing_surfaces(self.numeric_design())
@@ -565,7 +498,7 @@ class Aircraft:
                            upper=spec["upper"], description=spec["description"]))
         if self.tilt == "control":   # the wing-mounted angle where a segment lets it be a control
             out.append(self._tilt_unknown())
-        out += self._trim_unknowns()
+        out += trim_unknowns(self)
         # gear/flap deployment: a control only where a segment allows a drag device
         out.append(Unknown("drag_device_deployment", unit="-", scale=1.0, lower=0.0, upper=1.0,
                            description="gear/flap deployment on approach (fraction of drag_device_area_m2)",
@@ -655,17 +588,7 @@ class Aircraft:
         residuals = [r_ for gm in self.groups for r_ in rot[gm.name]["residuals"]]
         residuals.append(ResidualGroup("power balance", po["power_balance_W"], scale=self.bus.power_scale_W,
                                        unit="W"))
-        trimmed = np.flatnonzero(self.trim_nodes(nodes.parameters, K))
-        tilted = (np.abs(env["wma_schedule"]) > 1e-9) | env["tilt_nodes"]
-        if self.config.kind == "tilt_wing" and np.any(tilted[trimmed]):
-            raise InputError("pitch_trim", "a tilt-wing trims in pitch only where its wings are level (the "
-                             "tilted rotors' hub positions and the post-stall strips' moment are not "
-                             "modelled): set pitch_trim = 0 in the segments that tilt, as evtol_segments does")
-        if trimmed.size:   # scaled by the weight times the main wing's MAC
-            moment = self.pitching_moment(aero, rot, env)
-            scale = self.togw_baseline_kg * G0 * self.config.main_wing.mean_aerodynamic_chord_m
-            residuals.append(ResidualGroup("pitch trim", moment[:, [int(k) for k in trimmed]], scale=scale,
-                                           unit="N m", row_labels=["moment about the CG"], columns=trimmed))
+        residuals += trim_residuals(self, nodes, aero, rot, env)
         if self.limits_on:
             residuals += operating_limits(self, nodes, rot, po, aero, env)
         out = node_outputs(self, nodes, rot, aero, po, env)
@@ -717,7 +640,7 @@ class Aircraft:
         v_cp = tuple(x + y for x, y in zip(v_axial, v_rest))
         v_cp = self._flap_upwash(nodes, v_cp, V)
         if self.trim_surfaces:
-            v_cp = self._trim_upwash(unknowns, v_cp, V)
+            v_cp = trim_upwash(self, unknowns, v_cp, V)
         v_b = v_rest if self.coupling == "swirl" else None
         mach = V / a_s
         wing_alpha = alpha + wma if self.config.kind == "tilt_wing" else alpha

@@ -51,8 +51,11 @@ import math
 import casadi as ca
 import numpy as np
 
-__all__ = ["section_cm0", "pitching_moment_about_cg", "neutral_point_x", "trim_upwash", "surface_lift_N",
-           "mean_aerodynamic_chord"]
+from ..core.errors import InputError
+from .base import G0, ResidualGroup, Unknown
+
+__all__ = ["section_cm0", "pitching_moment_about_cg", "neutral_point_x", "surface_lift_N",
+           "mean_aerodynamic_chord", "add_balance", "trim_unknowns", "trim_upwash", "trim_residuals"]
 
 
 def section_cm0(vlm) -> np.ndarray:
@@ -123,14 +126,6 @@ def neutral_point_x(vlm, fuselage, z_cg, dalpha_rad: float = math.radians(1.0)):
     return r_ref[0] - (dM + (r_ref[2] - z_cg) * dF_x) / dF_z
 
 
-def trim_upwash(vlm, surface_index: int, V, delta):
-    """Upwash (N x K, m/s) of an incidence change ``delta`` (rad, 1 x K) of one surface of
-    ``vlm``: ``V delta`` at its control points, zero elsewhere."""
-    mask = np.array([1.0 if s == surface_index else 0.0 for s in vlm.strip_surface])
-    panel = ca.mtimes(ca.DM(vlm.strip_sum).T, ca.DM(mask.reshape(-1, 1)))   # N x 1
-    return ca.mtimes(panel, V * delta)
-
-
 def surface_lift_N(vlm, r, surface_index: int, rho, V):
     """Lift (N, 1 x K, both halves) of one surface of a lattice solution ``r``."""
     g = vlm.geometry
@@ -145,3 +140,89 @@ def mean_aerodynamic_chord(area_m2, span, taper):
     """MAC of a straight-tapered wing of constant area (numbers or CasADi)."""
     c_root = 2.0 * area_m2 / (span * (1.0 + taper))
     return 2.0 / 3.0 * c_root * (1 + taper + taper * taper) / (1 + taper)
+
+
+# ---------------------------------------------------------------- an Aircraft's balance
+def add_balance(ac, problem) -> None:
+    """The CG's x (a design variable: the battery's position sets it, within
+    ``VehicleConfig.cg_x_range_m``), the static margin requirement and the summary outputs
+    of an :class:`~mdo.vehicle.aircraft.Aircraft`.  The baseline CG sits 5 % of MAC ahead
+    of the required margin, from the baseline's neutral point, or at the end of the range
+    nearest it."""
+    cfg, main = ac.config, ac.config.main_wing
+    c0 = main.mean_aerodynamic_chord_m
+    x_np0 = float(neutral_point_x(ac._lattice(ac.wing_surfaces(ac.numeric_design())[0], ac.S_ref),
+                                  cfg.fuselage, cfg.cg_z_m))
+    if cfg.cg_x_range_m is not None:
+        lo, up = (float(x) for x in cfg.cg_x_range_m)
+    else:   # the main wing's MAC, 0-50 % (unswept quarter chord: its leading edge at (c_r - c)/4)
+        x_le = main.root_le_x_m + 0.25 * (main.root_chord_m - c0)
+        lo, up = x_le, x_le + 0.5 * c0
+    init = float(np.clip(x_np0 - (cfg.static_margin_min + 0.05) * c0, lo, up))
+    if "wing" not in ac.free:
+        lo = up = init
+    ac.x_cg = problem.variable("cg_x", 1, unit="m", scale=c0, lower=lo, upper=up, init=init, design=True,
+                               description="centre of gravity, x (body axes; set by the battery's position)")
+    dw = ac.design["wings"][main.name]
+    x_np = neutral_point_x(ac.vlm, cfg.fuselage, cfg.cg_z_m)
+    margin = (x_np - ac.x_cg) / mean_aerodynamic_chord(main.area_m2, dw["span"], dw["taper"])
+    if ac.design_point_constraints:
+        problem.constrain("static margin", margin - cfg.static_margin_min, kind=">=", scale=0.05, unit="-",
+                          labels=[f"(x_np - x_cg)/MAC - {cfg.static_margin_min:g}"])
+    problem.output("cg_x_m", ac.x_cg, unit="m", summary=True)
+    problem.output("neutral_point_x_m", x_np, unit="m", summary=True)
+    problem.output("static_margin", margin, unit="-", summary=True)
+    ac.strip_cm0 = section_cm0(ac.vlm) if ac.nchord == 1 else None
+
+
+def trim_unknowns(ac) -> list:
+    """The incidence of each all-moving surface where the segment trims (``pitch_trim``)."""
+    out = []
+    for w in ac.trim_surfaces:
+        a, b = w.trim_incidence_range_deg
+        out.append(Unknown(f"{w.name}.trim_incidence", unit="rad", scale=0.1, lower=math.radians(a),
+                           upper=math.radians(b), only_where="pitch_trim",
+                           description=f"{w.name} incidence added for pitch trim ({a:g} to {b:g} deg)"))
+    return out
+
+
+def trim_upwash(ac, unknowns, v_cp, V):
+    """The trim surfaces' incidence as an upwash ``V delta`` at their control points, added to
+    the z component of ``v_cp`` (N x K each)."""
+    vlm = ac.vlm
+    names = [s_.name for s_ in vlm.surfaces]
+    vz = v_cp[2]
+    for w in ac.trim_surfaces:
+        k = names.index(w.name)
+        mask = np.array([1.0 if s == k else 0.0 for s in vlm.strip_surface])
+        panel = ca.mtimes(ca.DM(vlm.strip_sum).T, ca.DM(mask.reshape(-1, 1)))   # N x 1
+        vz = vz + ca.mtimes(panel, V * unknowns[f"{w.name}.trim_incidence"])
+    return (v_cp[0], v_cp[1], vz)
+
+
+def trim_residuals(ac, nodes, aero, rot, env) -> list:
+    """The "pitch trim" group (moment about the CG = 0, N m, scaled by weight x MAC) at the
+    nodes with ``pitch_trim`` > 0 of a vehicle with trim surfaces; [] otherwise.  A tilt-wing
+    trims only where its wings are level (module docstring)."""
+    K = env["K"]
+    if not ac.trim_surfaces:
+        return []
+    on = np.asarray(ca.DM(nodes.parameters.get("pitch_trim", ca.DM.ones(1, K))), float).ravel() * np.ones(K) > 0
+    trimmed = np.flatnonzero(on)
+    tilted = (np.abs(env["wma_schedule"]) > 1e-9) | env["tilt_nodes"]
+    if ac.config.kind == "tilt_wing" and np.any(tilted[trimmed]):
+        raise InputError("pitch_trim", "a tilt-wing trims in pitch only where its wings are level (the "
+                         "tilted rotors' hub positions and the post-stall strips' moment are not "
+                         "modelled): set pitch_trim = 0 in the segments that tilt, as evtol_segments does")
+    if not trimmed.size:
+        return []
+    rotors = []
+    for gm in ac.groups:
+        o = rot[gm.name]
+        axis = ac.rotor_axis_angle(gm, env["wma"])
+        rotors += [(x, z, o["T"], o["H"], axis, 2) for (x, _, z) in ac.rotor_centres[gm.name]]
+    moment = pitching_moment_about_cg(ac.vlm, aero["vlm"], env["rho"], env["V"], env["alpha"], ac.x_cg,
+                                      ac.config.cg_z_m, ac.strip_cm0, ac.config.fuselage, rotors)
+    scale = ac.togw_baseline_kg * G0 * ac.config.main_wing.mean_aerodynamic_chord_m
+    return [ResidualGroup("pitch trim", moment[:, [int(k) for k in trimmed]], scale=scale, unit="N m",
+                          row_labels=["moment about the CG"], columns=trimmed)]
