@@ -62,7 +62,8 @@ def operating_limits(ac, nodes, rot, po, aero, env) -> list:
         # below cl_max itself (margin 0) and reports the margin it has (as the tip Mach)
         margin = np.where(margin >= 0.0, 0.0, margin)
     # the lifting wings and the all-moving trim surfaces (a stabilator must not stall either)
-    expr, labels = stall_margin_rows(ac.vlm, aero["vlm"], ac.lifting_wings + ac.trim_surfaces, ac.strip_eta, env["rho"],
+    checked = ac.lifting_wings + ac.trim_surfaces
+    expr, labels = stall_margin_rows(ac.vlm, aero["vlm"], checked, ac.strip_eta, env["rho"],
                                      env["V"], env["mu"], _row(margin), nodes.parameters.get(
                                          "flap_deflection", _row(0.0, K)), cols, exposed=ac.strip_exposed)
     if expr is not None:
