@@ -261,7 +261,11 @@ class Mission:
         self._add_collocation(problem, ev, state_vars)
         self._add_energy_and_outputs(problem, state_vars, dist, time_row, num, params)
         self.built = True
+        # lifted node quantities start at their definitions, before and after the states' guess
+        start_defined = getattr(problem, "start_defined", lambda: None)
+        start_defined()
         self._initial_states_guess(problem, state_vars, ev, dur_guess)
+        start_defined()
         return self
 
     # ------------------------------------------------------------------ build steps
@@ -410,8 +414,9 @@ class Mission:
             rl = list(grp.row_labels) if grp.row_labels is not None else (
                 [f"row {r}" for r in range(rows)] if rows > 1 else [""])
             lab = [f"{labels[k]} {rl[r]}".rstrip() for k in cols for r in range(rows)]
+            defines = None if grp.defines is None else f"{self.prefix}{grp.defines}"
             problem.constrain(f"{self.prefix}{grp.name}", expr, kind=grp.kind, scale=grp.scale, unit=grp.unit,
-                              labels=lab)
+                              labels=lab, defines=defines)
 
     def _add_collocation(self, problem, ev, state_vars):
         for st in self.state_specs:

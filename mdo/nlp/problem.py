@@ -87,6 +87,7 @@ class ConstraintGroup:
     lhs: object = None      # expr (model units); values flattened column-major like the residual
     rhs: object = None      # rhs (number, array or expression)
     con: object = None      # the Opti constraint (its dual is IPOPT's lam_g)
+    defines: str | None = None   # the variable this equality defines (Problem.constrain)
 
 
 @dataclass
@@ -289,8 +290,13 @@ class Problem:
         return P
 
     def constrain(self, name: str, expr, *, kind: str = "==", rhs=0.0, scale=1.0,
-                  unit: str = "-", labels: Sequence[str] | None = None):
-        """Add a named group ``expr (kind) rhs``, scaled by ``scale`` (a typical residual)."""
+                  unit: str = "-", labels: Sequence[str] | None = None, defines: str | None = None):
+        """Add a named group ``expr (kind) rhs``, scaled by ``scale`` (a typical residual).
+
+        ``defines``: the name of a variable ``v`` this equality defines, ``expr = v -
+        f(other variables)`` with ``v`` at coefficient one (a lifted intermediate, e.g. a
+        rotor's thrust at the nodes): the solve starts ``v`` at ``f`` of the initial point
+        (:meth:`start_defined`), whatever its own guess was."""
         if kind not in ("==", "<=", ">="):
             raise InputError(f"constraint {name!r} kind", f"must be '==', '<=' or '>=', got {kind!r}")
         if name in self.groups:
@@ -308,8 +314,13 @@ class Problem:
         labels = list(labels)
         if len(labels) != n:
             raise InputError(f"constraint {name!r} labels", f"{len(labels)} labels for {n} elements")
+        if defines is not None:
+            var = self.variables.get(defines)
+            if kind != "==" or var is None or var.size != n:
+                raise InputError(f"constraint {name!r} defines", f"an equality of the size of an existing variable, "
+                                 f"got {kind!r} with {n} elements for {defines!r}")
         self.groups[name] = ConstraintGroup(name, kind, r, float(scale), unit, labels, n,
-                                            lhs=expr, rhs=rhs, con=con)
+                                            lhs=expr, rhs=rhs, con=con, defines=defines)
 
     def minimize(self, expr, *, unit: str = "-", scale: float = 1.0, name: str = "objective"):
         self.objective = expr
@@ -471,6 +482,27 @@ class Problem:
             return None
         return lam
 
+    def start_defined(self) -> None:
+        """Start every variable that an equality defines (``constrain(defines=...)``) at its
+        definition's value at the current initial point: ``v <- v - (v - f)``, repeated
+        while one defined variable feeds another's definition (at most once per group)."""
+        groups = [g for g in self.groups.values() if g.defines is not None]
+        if not groups:
+            return
+        opti = self.opti
+        f = ca.Function("defined", [opti.x, opti.p], [ca.vec(g.lhs - g.rhs) for g in groups])
+        par = opti.debug.value(opti.p, opti.value_parameters()) if opti.np else ca.DM()
+        for _ in range(len(groups)):
+            x0 = opti.debug.value(opti.x, opti.initial())
+            worst = 0.0
+            for g, r in zip(groups, f.call([x0, par])):
+                v = self.variables[g.defines]
+                r = np.asarray(r, float).reshape(v.shape, order="F")
+                worst = max(worst, float(np.max(np.abs(r) / v.scale)) if r.size else 0.0)
+                self.set_initial(v.name, v.init - r)
+            if not worst > 1e-12:   # (NaN: stop too; the solve reports it)
+                break
+
     def initial_violations(self, top: int | None = None) -> list:
         """Each constraint group's worst scaled violation at the initial guess
         (name, kind, scaled, value in group units, where), worst first: what a
@@ -510,6 +542,7 @@ class Problem:
         """
         if self.objective is None:
             self.opti.minimize(0)
+        self.start_defined()
         ipopt = dict(self.ipopt_options)
         if max_iter is not None:
             ipopt["max_iter"] = int(max_iter)

@@ -10,7 +10,8 @@ from .bemt import (
 )
 from .analysis import analyze, analyze_inputs, sweep_J, solve_phi, RotorResult, analysis_function, operating_inputs
 from .design import (
-    adkins_liebeck, adkins_liebeck_function, adkins_liebeck_unrolled, add_adkins_liebeck,
+    adkins_liebeck, adkins_liebeck_function, adkins_liebeck_implicit, adkins_liebeck_unrolled,
+    add_adkins_liebeck,
     DESIGN_INPUTS, design_guess,
 )
 
@@ -21,6 +22,7 @@ __all__ = [
     "bemt_function", "station_physics", "phi_momentum_guess", "bemt_unknowns", "add_bemt_nodes",
     "azimuth_angles", "inflow_components", "INPUT_NAMES", "NLP_OUTPUTS", "FULL_OUTPUTS", "PHI_MIN_RAD", "PHI_MAX_RAD",
     "analyze", "analyze_inputs", "sweep_J", "solve_phi", "RotorResult", "analysis_function", "operating_inputs",
-    "adkins_liebeck", "adkins_liebeck_function", "adkins_liebeck_unrolled", "add_adkins_liebeck",
+    "adkins_liebeck", "adkins_liebeck_function", "adkins_liebeck_implicit", "adkins_liebeck_unrolled",
+    "add_adkins_liebeck",
     "DESIGN_INPUTS", "design_guess",
 ]

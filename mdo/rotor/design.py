@@ -57,7 +57,7 @@ from .geometry import RotorGeometry, station_layout
 from .sections import section as make_section, section_coefficients
 
 __all__ = ["adkins_liebeck_function", "adkins_liebeck", "adkins_liebeck_unrolled",
-           "add_adkins_liebeck", "DESIGN_INPUTS", "design_guess"]
+           "adkins_liebeck_implicit", "add_adkins_liebeck", "DESIGN_INPUTS", "design_guess"]
 
 DESIGN_INPUTS = ("target", "speed_mps", "radius_m", "omega_radps", "cl_design", "rho_kgpm3",
                  "mu_Pas", "a_mps", "hub_fraction", "blades")
@@ -299,6 +299,22 @@ def adkins_liebeck(*, blades: int, radius_m: float, speed_mps: float, airfoil="n
     return res
 
 
+def _symbolic_guess(sec, n: int, p: dict, target: str):
+    """``design_guess``'s formulas on symbols (SX or MX): the starting (w, alpha) of the
+    unrolled and implicit designs."""
+    A = math.pi * p["radius_m"] ** 2 * (1 - p["hub_fraction"] ** 2)
+    V = p["speed_mps"]
+    if target == "thrust":
+        w = -V + ca.sqrt(V * V + 2.0 * p["target"] / (p["rho_kgpm3"] * A))
+    else:
+        w = 0.0 * V + 1.0
+        for _ in range(8):
+            T = p["target"] / (V + 0.5 * w)
+            w = -V + ca.sqrt(V * V + 2.0 * T / (p["rho_kgpm3"] * A))
+    alpha = ca.repmat(float(getattr(sec, "alpha0_rad", 0.0)) + p["cl_design"] / (2 * math.pi), n, 1)
+    return 1.15 * w, alpha
+
+
 def adkins_liebeck_unrolled(sec, n_stations: int = 20, *, n_newton: int = 8, target="thrust",
                             tip_loss=True, hub_loss=True) -> ca.Function:
     """A-L design as an explicit SX Function: ``n_newton`` full Newton steps on the
@@ -306,22 +322,11 @@ def adkins_liebeck_unrolled(sec, n_stations: int = 20, *, n_newton: int = 8, tar
     ``DESIGN_INPUTS``; outputs as ``adkins_liebeck_function`` plus ``w_mps``.
     Differentiable end to end (derivatives of the unrolled map, exact once the
     iteration has converged).  Larger graph than the residual form; kept for
-    comparison and for users who want no extra unknowns."""
+    comparison (``adkins_liebeck_implicit`` is the one the aircraft use)."""
     f = adkins_liebeck_function(sec, n_stations, target=target, tip_loss=tip_loss, hub_loss=hub_loss)
     p = _params_sym()
-    n = n_stations
-    A = math.pi * p["radius_m"] ** 2 * (1 - p["hub_fraction"] ** 2)
-    V = p["speed_mps"]
-    if target == "thrust":
-        w = 1.15 * (-V + ca.sqrt(V * V + 2.0 * p["target"] / (p["rho_kgpm3"] * A)))
-    else:
-        w = ca.SX(1.0)
-        for _ in range(8):
-            T = p["target"] / (V + 0.5 * w)
-            w = -V + ca.sqrt(V * V + 2.0 * T / (p["rho_kgpm3"] * A))
-        w = 1.15 * w
-    alpha = ca.repmat(float(getattr(sec, "alpha0_rad", 0.0)) + p["cl_design"] / (2 * math.pi), n, 1)
-    zs = ca.SX.sym("z", n + 1)
+    w, alpha = _symbolic_guess(sec, n_stations, p, target)
+    zs = ca.SX.sym("z", n_stations + 1)
     pr = [p[k] for k in DESIGN_INPUTS]
     rz = f(*pr, zs[0], zs[1:])[0]
     fj = ca.Function("al_rj", pr + [zs], [rz, ca.jacobian(rz, zs)])
@@ -333,6 +338,46 @@ def adkins_liebeck_unrolled(sec, n_stations: int = 20, *, n_newton: int = 8, tar
     names = list(f.name_out()) + ["w_mps"]
     return ca.Function(f"adkins_liebeck_unrolled_{target}", pr, list(out) + [z[0]],
                        list(DESIGN_INPUTS), names)
+
+
+def adkins_liebeck_implicit(sec, n_stations: int = 20, *, target: str = "thrust", tip_loss=True,
+                            hub_loss=True) -> ca.Function:
+    """A-L design as an implicit function of its inputs: an MX Function.
+
+    The (n+1) residuals of ``adkins_liebeck_function`` are solved inside the graph by
+    CasADi's Newton ``rootfinder`` (tolerance 1e-12, at most 50 steps), started from
+    ``design_guess``'s formulas; first and second derivatives follow from the implicit
+    function theorem (``dz/dp = -R_z^-1 R_p``), so the design is exact at every
+    evaluation and an NLP needs no blade unknowns.  Measured against the damped
+    numeric ``adkins_liebeck`` over the corners of the aircraft's design boxes
+    (thrust 0.3-3x, speed 0.6-1.3x, radius 0.5-1.6x, cl 0.4-1.0; GA-2P, GA-8P, TTW,
+    81 points each): the same blades to 3e-12, and Newton fails only where the
+    damped solve fails too (an unreachable design; the evaluation then raises, which
+    IPOPT treats as a rejected trial step).  Why: the 17 blade unknowns were dense
+    Hessian rows of every mission node (issue 20, ``results/benchmark.md``).
+
+    Inputs ``DESIGN_INPUTS`` (by name); outputs as ``adkins_liebeck_function``
+    without ``residual``, plus ``w_mps`` and ``alpha_rad`` [n] (the solved unknowns).
+    """
+    key = (id(sec), "al_implicit", n_stations, target, tip_loss, hub_loss)
+    if key in _CACHE:
+        return _CACHE[key][0]
+    f = adkins_liebeck_function(sec, n_stations, target=target, tip_loss=tip_loss, hub_loss=hub_loss)
+    z = ca.SX.sym("z", n_stations + 1)
+    ps = ca.SX.sym("p", len(DESIGN_INPUTS))
+    out = f(**{k: ps[i] for i, k in enumerate(DESIGN_INPUTS)}, w_mps=z[0], alpha_rad=z[1:])
+    names = [k for k in f.name_out() if k != "residual"]
+    g = ca.Function("al_residual", [z, ps], [out["residual"]] + [out[k] for k in names])
+    root = ca.rootfinder(f"adkins_liebeck_root_{target}", "newton", g,
+                         {"abstol": 1e-12, "max_iter": 50, "error_on_fail": True})
+    pm = {k: ca.MX.sym(k) for k in DESIGN_INPUTS}
+    w0, a0 = _symbolic_guess(sec, n_stations, pm, target)
+    res = root(ca.vertcat(w0, a0), ca.vertcat(*[pm[k] for k in DESIGN_INPUTS]))
+    zs = res[0]
+    fn = ca.Function(f"adkins_liebeck_implicit_{target}", [pm[k] for k in DESIGN_INPUTS],
+                     list(res[1:]) + [zs[0], zs[1:]], list(DESIGN_INPUTS), names + ["w_mps", "alpha_rad"])
+    _CACHE[key] = (fn, sec)
+    return fn
 
 
 def add_adkins_liebeck(problem, name: str, sec, inputs: dict, *, n_stations: int = 20,

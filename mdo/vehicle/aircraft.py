@@ -9,8 +9,9 @@ positions per rotor group, wing span, taper and section twists at constant
 reference area), the motor ratings (sized) and the gross weight, and builds the
 design-dependent parts once:
 
-* the blades: Adkins-Liebeck as residuals (design-level unknowns ``w``, ``alpha_i``),
-  giving chord and twist at the BEMT stations (``mdo.rotor``);
+* the blades: Adkins-Liebeck solved inside the graph (``adkins_liebeck_implicit``: a
+  Newton rootfinder with implicit-function derivatives, no blade unknowns), giving chord
+  and twist at the BEMT stations (``mdo.rotor``);
 * the lifting surfaces: a symmetric vortex lattice whose influence matrix depends
   on span, taper, twists and slipstream edges only (``mdo.wing``);
 * the propeller wakes: the blade-passage-averaged wake's influence at the wing's
@@ -22,7 +23,9 @@ inflow angles and pack current as unknowns:
 
 1. atmosphere at the node altitude; rotor inflow from speed, angle of attack and
    the wing-mounted angle (axial ``V cos(a)``, in-plane ``V sin(a)``, ``a = alpha + WMA``);
-2. BEMT residuals and loads (one SX Function mapped over the nodes);
+2. BEMT residuals and loads (one SX Function mapped over the nodes); the loads (thrust,
+   torque, in-plane force, circulation, mean induced velocity, swirl power) are lifted:
+   node variables with an equality to their BEMT sums, so the Hessian stays sparse;
 3. wake velocity at the wing = sum over rotors of influence x (Gamma, Omega/V_w);
 4. one vortex-lattice solve for all nodes: ``A(d) [G_1..G_K] = [b_1..b_K]``, with the
    wake in the flow tangency and the "swirl" force coupling (``mdo.wake`` README);
@@ -612,18 +615,20 @@ class Aircraft:
             pitch = unknowns[f"{g.name}.collective_pitch"] + _row(1.0 - (act > 0.5)) * pitch
         bm, residuals = gm.bemt_nodes(K, env["wma_schedule"], pitch, omega, v_ax, v_ip, env["rho"],
                                       env["mu"], env["a_s"], phi, azimuth_nodes=env["tilt_nodes"])
+        loads, lifted = gm.lifted_loads(bm, unknowns, v_ax, env["rho"])
+        residuals = residuals + lifted
         on = np.flatnonzero(act > 0.5)
         off = np.flatnonzero(act <= 0.5)
         if off.size:   # stopped: hold the speed so the unused BEMT unknowns stay determined
             residuals = residuals + [ResidualGroup(f"{g.name} stopped", omega[:, list(off)] - gm.omega_design,
                                                    scale=gm.omega_design, unit="rad/s", columns=off)]
         a = _row(act)
-        return {"T": a * bm["thrust_N"], "Q": a * bm["torque_Nm"], "H": a * bm["hforce_N"], "omega": omega,
-                "gamma": ca.repmat(a, self.n_stations, 1) * bm["gamma_m2ps"], "v_wake": v_ax + bm["va_mean_mps"],
+        return {"T": a * loads["thrust_N"], "Q": a * loads["torque_Nm"], "H": a * loads["hforce_N"], "omega": omega,
+                "gamma": ca.repmat(a, self.n_stations, 1) * loads["gamma_m2ps"], "v_wake": v_ax + loads["va_mean_mps"],
                 "v_ax": v_ax, "cos": ca.cos(a_rot), "sin": ca.sin(a_rot), "bemt": bm, "residuals": residuals,
                 "pitch": pitch * _row(1.0, K),
                 "active": act, "on": on, "off": off,
-                "swirl_W": a * gm.swirl_power_W(bm, v_ax, env["rho"]) * g.count}
+                "swirl_W": a * loads["swirl_W"] * g.count}
 
     def _aerodynamics(self, nodes, unknowns, rot, env, heat_W=None) -> dict:
         """Wake at the wing, the lattice, the bounded swirl credit and the drag build-up."""

@@ -145,6 +145,12 @@ class ResidualGroup:
     ``'>='`` for limits (e.g. a cell current), compared with zero.
     ``columns``: the node indices of the columns of ``expr`` when it covers only
     some nodes (rows x len(columns)); None = all K nodes.
+    ``defines``: the name of an :class:`Unknown` this equality defines, ``expr =
+    unknown - definition`` (the unknown with coefficient one, in its own unit): a
+    quantity computed at the nodes that the NLP carries as a variable (a *lifted*
+    intermediate, Albersmeyer & Diehl, SIAM J. Optim. 20(3), 2010), which makes the
+    Hessian sparser; the problem starts it at its definition's value
+    (``mdo.nlp.Problem.constrain(defines=...)``), so the vehicle guesses nothing for it.
     """
 
     name: str
@@ -154,6 +160,7 @@ class ResidualGroup:
     kind: str = "=="
     row_labels: Sequence[str] | None = None
     columns: Sequence[int] | None = None
+    defines: str | None = None
 
 
 @dataclass

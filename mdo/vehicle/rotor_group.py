@@ -35,7 +35,7 @@ import casadi as ca
 from ..core import units as u
 from ..core.atmosphere import atmosphere
 from ..powertrain import MotorGroup
-from ..rotor import PHI_MAX_RAD, PHI_MIN_RAD, adkins_liebeck, add_adkins_liebeck, bemt_function, section
+from ..rotor import PHI_MAX_RAD, PHI_MIN_RAD, adkins_liebeck, adkins_liebeck_implicit, bemt_function, section
 from ..rotor.geometry import station_layout
 from .base import ResidualGroup, Unknown
 
@@ -58,8 +58,9 @@ class RotorGroupModel:
     """The models of one ``RotorGroupConfig`` (see the module docstring)."""
 
     def __init__(self, group, vehicle_kind: str, tilting: bool, *, n_stations: int, n_azimuth: int,
-                 pitch_control: bool = False):
+                 pitch_control: bool = False, lift_loads: bool = True):
         self.config = group
+        self.lift_loads = bool(lift_loads)
         self.pitch_control = bool(pitch_control) and group.variable_pitch   # a fixed-pitch group flies the schedule
         self.name = group.name
         self.tilting = bool(tilting)
@@ -129,8 +130,8 @@ class RotorGroupModel:
                      "rho_kgpm3": float(atm_d["density_kgpm3"]), "mu_Pas": float(atm_d["dynamic_viscosity_Pas"]),
                      "a_mps": float(atm_d["speed_of_sound_mps"]), "hub_fraction": g.hub_fraction,
                      "blades": g.blades}
-        self.blade = add_adkins_liebeck(problem, f"{p}.blade", self.section, al_inputs,
-                                        n_stations=self.n_stations, init=self.baseline_blade())
+        # the blade, solved inside the graph (no blade unknowns: issue 20)
+        self.blade = dict(adkins_liebeck_implicit(self.section, self.n_stations)(**al_inputs))
         a_d = float(atm_d["speed_of_sound_mps"])
         tip2 = (self.omega_design * d["R"]) ** 2 + d["V_design"] ** 2
         if design_point_constraint:
@@ -159,6 +160,8 @@ class RotorGroupModel:
             Unknown(f"{self.name}.phi", unit="rad", scale=0.3, lower=PHI_MIN_RAD, upper=PHI_MAX_RAD, rows=n * m,
                     description="BEMT inflow angles (station fastest, then azimuth)"),
         ]
+        if self.lift_loads:
+            out += self.load_unknowns()
         if self.pitch_control:   # a variable-pitch hub: the collective is a control where the rotor runs
             lo, hi = (x * u.DEG for x in self.config.collective_range_deg)
             out.append(Unknown(f"{self.name}.collective_pitch", unit="rad", scale=0.2, lower=lo, upper=hi,
@@ -167,6 +170,56 @@ class RotorGroupModel:
                                            f"{self.config.collective_range_deg[0]:g} to "
                                            f"{self.config.collective_range_deg[1]:g} deg)"))
         return out
+
+    def _load_specs(self) -> list:
+        """(unknown suffix, BEMT output or "swirl", unit, scale, rows, description) of the lifted loads.
+        Scales from the baseline blade at its design point."""
+        b, n = self.baseline_blade(), self.n_stations
+        T0, Q0 = abs(float(b["thrust_N"])), abs(float(b["torque_Nm"]))
+        P0 = Q0 * self.omega_design
+        specs = [("thrust", "thrust_N", "N", T0, 1, "thrust of one rotor"),
+                 ("torque", "torque_Nm", "N m", Q0, 1, "shaft torque of one rotor"),
+                 ("circulation", "gamma_m2ps", "m^2/s", float(np.max(np.abs(b["gamma_m2ps"]))), n,
+                  "bound circulation of the blade stations (azimuth mean)"),
+                 ("induced_velocity", "va_mean_mps", "m/s", max(0.5 * abs(float(b["w_mps"])), 1.0), 1,
+                  "area-mean induced axial velocity at the disk"),
+                 ("swirl_power", "swirl", "W", max(0.02 * P0, 10.0), 1,
+                  "rotational kinetic-energy flux of one rotor's slipstream (swirl_power_W)")]
+        if self.n_azimuth > 1:
+            specs.insert(2, ("hforce", "hforce_N", "N", 0.1 * T0, 1, "in-plane force of one rotor"))
+        return specs
+
+    def load_unknowns(self) -> list:
+        """The rotor's node loads as lifted unknowns (issue 20): thrust, torque, in-plane force
+        (azimuth-averaged groups), the stations' circulation, the mean induced velocity and
+        the slipstream's swirl power, each a variable at every node with an equality to its
+        BEMT sum (:meth:`lifted_loads`).  Everything downstream (forces, powertrain, wake,
+        lattice, limits) reads the variables, so each inflow angle's second derivatives touch
+        only its own station's residual and these sums: a sparser Hessian, in fewer colours."""
+        return [Unknown(f"{self.name}.{key}", unit=unit, scale=scale, rows=rows, description=desc + " (lifted)")
+                for key, _, unit, scale, rows, desc in self._load_specs()]
+
+    def lifted_loads(self, bm: dict, unknowns: dict, v_ax, rho) -> tuple:
+        """The loads downstream blocks read and, when lifted, their defining equalities.
+
+        Returns ({"thrust_N", "torque_Nm", "hforce_N", "gamma_m2ps", "va_mean_mps",
+        "swirl_W"} per rotor, rows x K; [ResidualGroup]).  A one-azimuth BEMT has no
+        in-plane force (its blade sits at psi = pi, where sin psi is round-off)."""
+        swirl = self.swirl_power_W(bm, v_ax, rho)
+        exact = {"thrust_N": bm["thrust_N"], "torque_Nm": bm["torque_Nm"],
+                 "hforce_N": bm["hforce_N"] if self.n_azimuth > 1 else 0.0 * bm["thrust_N"],
+                 "gamma_m2ps": bm["gamma_m2ps"], "va_mean_mps": bm["va_mean_mps"], "swirl_W": swirl}
+        if not self.lift_loads:
+            return exact, []
+        out, groups = dict(exact), []
+        for key, src, unit, scale, rows, _ in self._load_specs():
+            name = f"{self.name}.{key}"
+            dst = "swirl_W" if src == "swirl" else src
+            out[dst] = unknowns[name]
+            groups.append(ResidualGroup(f"{self.name} {key} (lifted)", unknowns[name] - exact[dst], scale=scale,
+                                        unit=unit, defines=name,
+                                        row_labels=[f"r{i}" for i in range(rows)] if rows > 1 else None))
+        return out, groups
 
     def transition_nodes(self, wma) -> np.ndarray:
         """Nodes whose tilted rotors see in-plane flow worth azimuth averaging."""
