@@ -87,7 +87,11 @@ def minimize_battery_energy(problem, vehicle, mission, *, max_iter: int = 500):
     figures of ``mdo plot``."""
     problem.minimize(mission.energy_used_J / KWH, unit="kWh", scale=10.0, name="battery energy used")
     problem.ipopt_options["max_iter"] = int(max_iter)
-    problem.add_report(mission.report)
-    add_vehicle_reports(problem, vehicle, mission)
+
+    def mission_report(solution, out_dir):   # the data; figure_report draws every figure once
+        return mission.report(solution, out_dir, figures=False)
+
+    problem.add_report(mission_report)
+    add_vehicle_reports(problem, vehicle, mission, figures=False)
     problem.add_report(figure_report)
     return problem

@@ -38,8 +38,8 @@ def mission_table(mission, solution) -> tuple[list[str], np.ndarray, list[str]]:
     return names, vals.T, list(mission.segment_of_node)
 
 
-def write_mission_report(mission, solution, out_dir):
-    """Write mission.csv, mission_segments.csv and mission.png; returns the csv path."""
+def write_mission_report(mission, solution, out_dir, figures: bool = True):
+    """Write mission.csv, mission_segments.csv and (with ``figures``) mission.png; returns the csv path."""
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     names, vals, seg = mission_table(mission, solution)
@@ -63,6 +63,7 @@ def write_mission_report(mission, solution, out_dir):
             w.writerow([g.segment.name, g.segment.kind, g.n, f"{t[a]:.6g}", f"{t[b] - t[a]:.6g}",
                         f"{g.kin.altitude_m[0]:.6g}", f"{g.kin.altitude_m[-1]:.6g}", f"{v[a]:.6g}",
                         f"{v[b]:.6g}", f"{e_seg[i] / KWH:.12g}"])
-    from ..plots.figures import plot_mission   # the figure is drawn from the file, as by ``mdo plot``
-    plot_mission(path, out / "mission.png")
+    if figures:
+        from ..plots.figures import plot_mission   # the figure is drawn from the file, as by ``mdo plot``
+        plot_mission(path, out / "mission.png")
     return path

@@ -647,10 +647,11 @@ class Mission:
                 out[k] = (expr, unit)
         return out
 
-    def report(self, solution, out_dir):
-        """Write ``mission.csv`` and ``mission.png`` into ``out_dir`` (usable with ``problem.add_report``)."""
+    def report(self, solution, out_dir, figures: bool = True):
+        """Write ``mission.csv`` and (with ``figures``) ``mission.png`` into ``out_dir`` (usable with
+        ``problem.add_report``; without figures where ``mdo.plots.figure_report`` draws them)."""
         from .report import write_mission_report
-        return write_mission_report(self, solution, out_dir)
+        return write_mission_report(self, solution, out_dir, figures=figures)
 
 
 def _force_scale(vehicle) -> float:

@@ -179,10 +179,13 @@ def bemt_numeric(gm, omega, v_ax, v_ip, h, pitch, n_azimuth=1):
               "a_mps": atm["speed_of_sound_mps"], "spin": np.ones(K)}
     return analyze_inputs(gm.section, inputs, gm.n_stations, n_azimuth)
 
-def omega_for_thrust(gm, T1, v_ax, v_ip, h, pitch, iterations=22, n_azimuth=1):
+def omega_for_thrust(gm, T1, v_ax, v_ip, h, pitch, iterations=40, n_azimuth=1, rtol=1e-10):
     """Rotor speed giving thrust ``T1`` per rotor at each node: a scan for the
     lowest speed whose thrust reaches T1 (thrust need not be monotonic in speed
-    for a blade far from its design inflow), then bisection in that interval."""
+    for a blade far from its design inflow), then the Illinois variant of regula
+    falsi in that interval (Dowell & Jarratt, BIT 11, 1971: superlinear, and it keeps
+    the bracket), to ``|T - T1| <= rtol T1`` at every node (about 6-8 BEMT solves
+    where 22 bisection steps were needed for the same rotor speed)."""
     grid = gm.omega_design * np.linspace(0.05, 2.5, 25)
     K = T1.size
     rep = lambda x: np.tile(np.asarray(x, float) * np.ones(K), grid.size)  # noqa: E731
@@ -190,11 +193,35 @@ def omega_for_thrust(gm, T1, v_ax, v_ip, h, pitch, iterations=22, n_azimuth=1):
                                        n_azimuth)["thrust_N"], float).reshape(grid.size, K)
     reach = Tg >= T1[None, :]
     j = np.where(reach.any(axis=0), np.argmax(reach, axis=0), grid.size - 1)
-    hi = grid[j]
-    lo = grid[np.maximum(j - 1, 0)]
+    cols = np.arange(K)
+    hi, f_hi = grid[j], Tg[j, cols] - T1
+    lo, f_lo = grid[np.maximum(j - 1, 0)], Tg[np.maximum(j - 1, 0), cols] - T1
+    # no sign change (T1 below the first or above the last grid speed): the bracket's end
+    out = np.where(f_hi < 0, hi, lo)
+    live = (f_lo < 0) & (f_hi >= 0) & (j > 0)
+    side = np.zeros(K, int)             # which end was kept last (Illinois halves its value)
+    tol = rtol * np.maximum(np.abs(T1), 1e-9)
     for _ in range(iterations):
-        mid = 0.5 * (lo + hi)
-        T = np.asarray(bemt_numeric(gm, mid, v_ax, v_ip, h, pitch, n_azimuth)["thrust_N"], float).ravel()
-        lo = np.where(T < T1, mid, lo)
-        hi = np.where(T < T1, hi, mid)
-    return 0.5 * (lo + hi)
+        if not live.any():
+            break
+        idx = np.flatnonzero(live)
+        a, b, fa, fb = lo[idx], hi[idx], f_lo[idx], f_hi[idx]
+        x = b - fb * (b - a) / (fb - fa)
+        x = np.where((x > a) & (x < b), x, 0.5 * (a + b))
+        fx = np.asarray(bemt_numeric(gm, x, *_at(idx, K, v_ax, v_ip, h, pitch), n_azimuth)["thrust_N"],
+                        float).ravel() - T1[idx]
+        out[idx] = x
+        done = np.abs(fx) <= tol[idx]
+        left = fx < 0                    # the root lies in (x, b]: x replaces lo
+        lo[idx] = np.where(left, x, a)
+        f_lo[idx] = np.where(left, fx, np.where(side[idx] == -1, 0.5 * fa, fa))
+        hi[idx] = np.where(left, b, x)
+        f_hi[idx] = np.where(left, np.where(side[idx] == 1, 0.5 * fb, fb), fx)
+        side[idx] = np.where(left, 1, -1)
+        live[idx] = ~done
+    return out
+
+
+def _at(idx, K, *rows):
+    """The ``idx`` entries of each row (numbers broadcast to K first)."""
+    return tuple((np.asarray(r, float) * np.ones(K))[idx] for r in rows)

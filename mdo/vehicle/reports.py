@@ -172,14 +172,15 @@ def _geometry_numbers(vehicle, mission, solution, k: int) -> dict:
             "reference_chord_m": vehicle.config.main_wing.mean_aerodynamic_chord_m}
 
 
-def write_geometry(vehicle, mission, solution, out: Path, k: int | None = None) -> Path:
-    """``geometry.json`` at node ``k`` (mid-cruise by default) and ``geometry.png`` from it."""
-    from ..plots.figures import run_title
-    from ..plots.geometry import plot_geometry
+def write_geometry(vehicle, mission, solution, out: Path, k: int | None = None, figure: bool = True) -> Path:
+    """``geometry.json`` at node ``k`` (mid-cruise by default) and (with ``figure``) ``geometry.png`` from it."""
     k = cruise_node(mission) if k is None else k
     path = Path(out) / "geometry.json"
     path.write_text(json.dumps(_geometry_numbers(vehicle, mission, solution, k), indent=1))
-    plot_geometry(path, Path(out) / "geometry.png", title=run_title(out, f"{vehicle.name} geometry"))
+    if figure:
+        from ..plots.figures import run_title
+        from ..plots.geometry import plot_geometry
+        plot_geometry(path, Path(out) / "geometry.png", title=run_title(out, f"{vehicle.name} geometry"))
     return path
 
 
@@ -260,8 +261,10 @@ def _file_safe(name: str) -> str:
     return "".join(ch if ch.isalnum() or ch in "-_" else "_" for ch in name)
 
 
-def add_vehicle_reports(problem, vehicle, mission):
-    """Register the vehicle's reports (mass, loading, blade, design, figures) on ``problem``."""
+def add_vehicle_reports(problem, vehicle, mission, figures: bool = True):
+    """Register the vehicle's reports (mass, loading, blade, design, figures) on ``problem``;
+    ``figures=False`` leaves geometry.png and the design checks to ``mdo.plots.figure_report``
+    (registered after it: each figure is then drawn once)."""
 
     def vehicle_report(solution, out_dir):
         out = Path(out_dir)
@@ -277,10 +280,11 @@ def add_vehicle_reports(problem, vehicle, mission):
         (out / "energy.md").write_text(energy_breakdown(vehicle, mission, solution))
         k = _write_loading(vehicle, mission, solution, out)
         _write_blade(vehicle, solution, out)
-        write_geometry(vehicle, mission, solution, out, k)
+        write_geometry(vehicle, mission, solution, out, k, figure=figures)
         _write_motor_maps(vehicle, mission, solution, design, out)
-        from ..plots.checks import write_design_checks
-        write_design_checks(out)
+        if figures:
+            from ..plots.checks import write_design_checks
+            write_design_checks(out)
 
     vehicle_report.vehicle, vehicle_report.mission = vehicle, mission   # for tools that redo one file
     problem.add_report(vehicle_report)
