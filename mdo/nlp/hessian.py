@@ -17,6 +17,11 @@ The split computes the same matrix in two parts:
 Both are exact; which variables are "global" changes only the cost, never the
 value (checked against the default to round-off in ``tests/test_hessian_split.py``;
 timings in ``tests/bench/split_hessian.py``).
+
+A *frozen* global (a design variable of an analysis, ``Problem.freeze_design``) has equal
+bounds, so IPOPT takes it out of its problem (``fixed_variable_treatment`` at its default
+``make_parameter``) and never reads its Hessian rows: they are left out (structural
+zeros), which takes 13 of GA-2P's 16 global rows out of every analysis iteration.
 """
 from __future__ import annotations
 
@@ -66,14 +71,16 @@ def general_rows(x, p, g) -> np.ndarray:
     return np.flatnonzero(~((per_row == 1) & ~nonlinear))
 
 
-def lagrangian_hessian_functions(problem, kind: str = "split", *, simple_bounds: bool = True) -> ca.Function:
+def lagrangian_hessian_functions(problem, kind: str = "split", *, simple_bounds: bool = True,
+                                 skip_fixed: bool = True) -> ca.Function:
     """``nlp_hess_l(x, p, lam_f, lam_g) -> triu(H)`` of ``problem``'s Opti.
 
     ``kind``: ``"full"`` (CasADi's own, one colouring of x) or ``"split"`` (module
     docstring).  ``simple_bounds``: the solver detects simple bounds (the
     ``detect_simple_bounds`` plugin option, as ``Problem.solve`` sets it), so
     ``lam_g`` holds only the general rows (:func:`general_rows`).  Give the result to
-    IPOPT as the ``hess_lag`` plugin option."""
+    IPOPT as the ``hess_lag`` plugin option.  ``skip_fixed``: leave out the rows of frozen
+    global variables (module docstring; only right while IPOPT removes fixed variables)."""
     if kind not in HESSIAN_KINDS:
         raise InputError("hessian", f"one of {', '.join(HESSIAN_KINDS)}, got {kind!r}")
     opti = problem.opti
@@ -89,14 +96,18 @@ def lagrangian_hessian_functions(problem, kind: str = "split", *, simple_bounds:
         pos = _positions(problem, x)
         node_vars = [v for v in problem.variables.values() if v.name not in glob]
         glob_vars = [v for v in problem.variables.values() if v.name in glob]
+        fixed = [v for v in glob_vars if skip_fixed and v.frozen]
+        glob_vars = [v for v in glob_vars if not (skip_fixed and v.frozen)]
         Y = ca.veccat(*[v.scaled for v in node_vars])
         D = ca.veccat(*[v.scaled for v in glob_vars])
-        ny = Y.numel()
+        ny, nd, nf = Y.numel(), D.numel(), sum(v.size for v in fixed)
         H_yy = ca.hessian(L, Y)[0]
         H_d = ca.jacobian(ca.gradient(L, D), ca.vertcat(Y, D))         # [H_dy, H_dd]
         H_blk = ca.vertcat(ca.horzcat(H_yy, H_d[:, :ny].T), H_d)
-        # [Y; D] = P x  ->  H_x = P' H_blk P
-        perm = np.concatenate([pos[v.name] for v in node_vars + glob_vars])
+        if nf:   # the frozen globals' rows and columns: structural zeros
+            H_blk = ca.diagcat(H_blk, ca.MX(nf, nf))
+        # [Y; D; F] = P x  ->  H_x = P' H_blk P
+        perm = np.concatenate([pos[v.name] for v in node_vars + glob_vars + fixed])
         n = x.numel()
         P = ca.DM(ca.Sparsity.triplet(n, n, list(range(n)), [int(i) for i in perm]), 1.0)
         H = ca.mtimes(ca.mtimes(P.T, H_blk), P)

@@ -570,7 +570,8 @@ class Problem:
         plugin = {"detect_simple_bounds": True, "print_time": verbose,
                   "error_on_fail": False, "expand": False}
         if hessian == "exact":   # the same matrix, computed by structure (mdo.nlp.hessian)
-            plugin["hess_lag"] = lagrangian_hessian_functions(self, "split")
+            plugin["hess_lag"] = lagrangian_hessian_functions(
+                self, "split", skip_fixed=ipopt.get("fixed_variable_treatment", "make_parameter") == "make_parameter")
         self.opti.solver("ipopt", plugin, ipopt)
         watch = self.divergence_watch if log_path is not None else None
         if watch is not None:
