@@ -46,7 +46,7 @@ def climb_cruise():
 
 def test_the_drag_terms_add_up_and_each_follows_its_law(climb_cruise):
     sol, v, m, row = climb_cruise
-    terms = ("profile", "fuselage", "nacelles", "fins", "folded", "leakage", "cooling")
+    terms = ("profile", "fuselage", "nacelles", "fins", "folded", "leakage", "cooling", "fuselage_crossflow")
     total = sum(row(f"drag_{t}_N") for t in terms) + row("drag_device_drag_N")
     assert np.allclose(total, row("parasite_drag_N"), rtol=1e-9)
     components = sum(row(f"drag_{t}_N") for t in terms[:5])
@@ -61,6 +61,17 @@ def test_the_drag_terms_add_up_and_each_follows_its_law(climb_cruise):
     assert np.all(row("drag_nacelles_N") > 0)
     cdp = row("CDp")
     assert np.all((cdp > 0.015) & (cdp < 0.03)), cdp
+    # the body at its angle of attack: Allen & Perkins' crossflow, N sin(alpha) with
+    # N = q eta c_dc S_p sin(alpha) |sin(alpha)| (S_p = pi/4 L W by default)
+    f = v.config.fuselage
+    a = np.radians(row("angle_of_attack_deg"))
+    h = np.asarray(sol.value(m.cond.altitude_m), float).ravel()
+    from mdo.core.atmosphere import density
+    q = 0.5 * np.asarray(density(h), float) * V * V
+    s_a = np.sin(a)
+    N = q * 0.6 * 1.2 * (math.pi / 4 * f.length_m * f.width_m) * s_a * np.sqrt(s_a * s_a + 1e-4)
+    assert np.allclose(row("drag_fuselage_crossflow_N"), N * s_a, rtol=1e-6)
+    assert np.all(row("drag_fuselage_crossflow_N") >= 0)
 
 
 def test_the_nacelles_see_the_slipstream_dynamic_pressure(climb_cruise):

@@ -68,7 +68,7 @@ from ..core.errors import InputError
 from ..core.smooth import smooth_max, smooth_min
 from ..powertrain import Bus
 from ..wake import WakeRotor, influence_sum_parts, spin_for, wake_influences
-from ..wing import VLM, Body, body_drag, constant_area, profile_drag, trapezoid
+from ..wing import VLM, Body, body_drag, constant_area, crossflow_normal_force, profile_drag, trapezoid
 from ..wing.buildup import CP_AIR
 from ..wing.drag import form_factor_wing, skin_friction
 from .aircraft_nodes import _num, _row, node_outputs, operating_limits
@@ -662,17 +662,19 @@ class Aircraft:
             credit, D_i = recovered, r["D_i"]
         stopped = {gm.name: _row(1.0 - rot[gm.name]["active"]) for gm in self.groups if rot[gm.name]["off"].size}
         b = self.drag_buildup(self.vlm, r, rho, mu, V, mach, stopped,
-                              thrust={gm.name: rot[gm.name]["T"] for gm in self.groups}, heat_W=heat_W)
-        pd, L_stall, D_folded = b["pd"], b["L_stall"], b["D_folded"]
+                              thrust={gm.name: rot[gm.name]["T"] for gm in self.groups}, heat_W=heat_W,
+                              alpha_body=alpha)
+        pd, L_stall, L_body, D_folded = b["pd"], b["L_stall"], b["L_body"], b["D_folded"]
         D_device, deploy = self._drag_device(nodes, unknowns, q)
         D_parasite = b["D_parasite"] + D_device
         trim = {w.name: unknowns[f"{w.name}.trim_incidence"] for w in self.trim_surfaces}
-        return {"vlm": r, "pd": pd, "D": D_i + D_parasite, "trim_incidence": trim, "L": r["L"] + L_stall, "D_i": D_i,
+        return {"vlm": r, "pd": pd, "D": D_i + D_parasite, "trim_incidence": trim, "L": r["L"] + L_stall + L_body, "D_i": D_i,
                 "D_parasite": D_parasite, "D_device": D_device, "deploy": deploy, "q": q, "D_folded": D_folded,
-                "drag_terms": b["terms"],
+                "drag_terms": b["terms"], "body_normal_N": b["N_body"],
                 "swirl_recovered_W": recovered, "swirl_available_W": available, "swirl_credit_W": credit}
 
-    def drag_buildup(self, vlm, r, rho, mu, V, mach, stopped=None, thrust=None, heat_W=None) -> dict:
+    def drag_buildup(self, vlm, r, rho, mu, V, mach, stopped=None, thrust=None, heat_W=None,
+                     alpha_body=None) -> dict:
         """Everything but the induced drag and the approach drag device, for a lattice
         solution ``r`` of ``vlm`` (rows 1 x K, numbers or CasADi), each term in N:
 
@@ -687,10 +689,16 @@ class Aircraft:
         * ``folded``: the drag area of each stopped/folded group times ``stopped[group]``;
         * ``leakage``: ``config.drag.leakage_protuberance_fraction`` of the terms above;
         * ``cooling``: the motor and inverter heat ``heat_W`` (1 x K, W) carried off by
-          ram air, Eq. B3 of :mod:`mdo.wing.buildup`: ``D = zeta V P_heat / (cp dT)``.
+          ram air, Eq. B3 of :mod:`mdo.wing.buildup`: ``D = zeta V P_heat / (cp dT)``;
+        * ``fuselage_crossflow``: the fuselage at the body's angle of attack ``alpha_body``
+          (1 x K, rad; none without it): the viscous crossflow's normal force ``N``
+          (:func:`~mdo.wing.crossflow_normal_force`, ``FuselageConfig``'s eta, c_dc and
+          planform area), whose drag ``N sin(alpha)`` is this term and whose lift
+          ``N cos(alpha)`` is ``L_body``.  Neither leakage nor anything else scales it.
 
         The model and the initial guess both use it.  Returns ``pd`` (profile drag
-        terms), ``L_stall``, ``D_folded``, ``D_parasite`` (N) and ``terms`` {name: N}."""
+        terms), ``L_stall``, ``L_body``, ``N_body``, ``D_folded``, ``D_parasite`` (N) and
+        ``terms`` {name: N}."""
         cfg = self.config.drag
         q = 0.5 * rho * V * V
         pd = profile_drag(vlm, r, rho, mu, mach)
@@ -715,8 +723,15 @@ class Aircraft:
         # Eq. B3: the cooling air's momentum deficit (mdo.wing.buildup, CP_AIR)
         terms["cooling"] = 0.0 if heat_W is None else \
             cfg.cooling_momentum_loss * V * heat_W / (CP_AIR * cfg.cooling_delta_T_K)
-        D_parasite = components + terms["leakage"] + terms["cooling"]
-        return {"pd": pd, "L_stall": L_stall, "D_folded": D_folded, "D_parasite": D_parasite, "terms": terms}
+        f = self.config.fuselage
+        N_body = 0.0 if alpha_body is None else crossflow_normal_force(
+            alpha_body, q, f.planform_area, f.crossflow_eta, f.crossflow_drag_coefficient)
+        lib = ca if isinstance(N_body, (ca.MX, ca.SX, ca.DM)) else np
+        terms["fuselage_crossflow"] = N_body * lib.sin(alpha_body) if alpha_body is not None else 0.0
+        L_body = N_body * lib.cos(alpha_body) if alpha_body is not None else 0.0
+        D_parasite = components + terms["leakage"] + terms["cooling"] + terms["fuselage_crossflow"]
+        return {"pd": pd, "L_stall": L_stall, "L_body": L_body, "N_body": N_body, "D_folded": D_folded,
+                "D_parasite": D_parasite, "terms": terms}
 
     def _nacelle_drag(self, V, rho, mu, mach, thrust=None):
         """Nacelle drag (N, 1 x K): Raymer's build-up ``q_s Cf(Re_s) FF Q S_wet`` at the

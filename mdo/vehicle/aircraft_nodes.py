@@ -80,6 +80,7 @@ DRAG_TERM_DOC = {
     "folded": "stopped/folded rotors' drag area",
     "leakage": "leakage and protuberances (fraction of the component drag, Raymer 12.5.9)",
     "cooling": "cooling air of the motors and inverters (momentum deficit, Eq. B3)",
+    "fuselage_crossflow": "fuselage at angle of attack: the viscous crossflow's drag (Allen & Perkins)",
 }
 
 

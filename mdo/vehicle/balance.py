@@ -19,6 +19,9 @@ moment about +y is nose-up positive.  Every term below is evaluated at every nod
   NACA TR 711, 1941): ``dCm/dalpha = K_f W_f^2 L_f / (c S)`` per degree, i.e.
   ``M_fus = q K_f W_f^2 L_f (180/pi) alpha`` - independent of the reference area and
   chord; ``K_f`` is ``FuselageConfig.pitching_moment_factor``;
+* the fuselage's viscous crossflow normal force ``N`` (``Aircraft.drag_buildup``), normal to
+  the body axis at the planform's centroid, half the body length behind the nose:
+  ``M = -(x_c - x_cg) N`` (second order in alpha: it leaves the neutral point alone);
 * every rotor's thrust ``T`` and in-plane force ``H`` at its hub: with the thrust axis
   ``a`` above the body x axis pointing forward, ``F_x = -T cos a + H sin a``,
   ``F_z = T sin a + H cos a`` and ``M = d_z F_x - d_x F_z`` with ``d = r_hub - r_cg``.
@@ -223,6 +226,7 @@ def trim_residuals(ac, nodes, aero, rot, env) -> list:
         rotors += [(x, z, o["T"], o["H"], axis, 2) for (x, _, z) in ac.rotor_centres[gm.name]]
     moment = pitching_moment_about_cg(ac.vlm, aero["vlm"], env["rho"], env["V"], env["alpha"], ac.x_cg,
                                       ac.config.cg_z_m, ac.strip_cm0, ac.config.fuselage, rotors)
+    moment = moment - (0.5 * ac.config.fuselage.length_m - ac.x_cg) * aero["body_normal_N"]
     scale = ac.togw_baseline_kg * G0 * ac.config.main_wing.mean_aerodynamic_chord_m
     return [ResidualGroup("pitch trim", moment[:, [int(k) for k in trimmed]], scale=scale, unit="N m",
                           row_labels=["moment about the CG"], columns=trimmed)]

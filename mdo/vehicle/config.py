@@ -16,6 +16,7 @@ assembly turns them into symbolic expressions.  Conventions:
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field, replace
 from typing import Sequence
 
@@ -288,11 +289,31 @@ class FuselageConfig:
     # TR 711): about 0.01 with the wing's root quarter chord near 30-35 % of the body length,
     # rising to 0.02-0.03 near 50 %; 0.012 is read off that chart for the GA layouts, an estimate
     pitching_moment_factor: float = 0.012
+    # the body at an angle of attack: the viscous crossflow's normal force (Allen & Perkins,
+    # NACA TR 1048, 1951; mdo.wing.drag.crossflow_normal_force), N = q eta c_dc S_p sin(a)|sin(a)|
+    # with c_dc 1.2, the crossflow drag coefficient of a circular cylinder below the critical
+    # crossflow Reynolds number, eta 0.6, the finite-length factor for fineness ratios 4-6
+    # (Jorgensen, NASA TR R-474, 1977, Fig. 3: rising to about 0.7 near 10), and the planform
+    # area S_p (default pi/4 L W, an ellipse: between a cylinder's L W and a cone's L W/2)
+    crossflow_drag_coefficient: float = 1.2
+    crossflow_eta: float = 0.6
+    planform_area_m2: float | None = None
 
     def __post_init__(self):
         for k in ("length_m", "width_m", "height_m", "wetted_area_m2", "tail_arm_m"):
             check_positive(f"fuselage.{k}", getattr(self, k), "m" if k != "wetted_area_m2" else "m^2")
         check_range("fuselage.pitching_moment_factor", self.pitching_moment_factor, 0.0, 0.1)
+        check_range("fuselage.crossflow_drag_coefficient", self.crossflow_drag_coefficient, 0.0, 2.5)
+        check_range("fuselage.crossflow_eta", self.crossflow_eta, 0.0, 1.0)
+        if self.planform_area_m2 is not None:
+            check_range("fuselage.planform_area_m2", self.planform_area_m2, 1e-3, self.length_m * self.width_m,
+                        "m^2")
+
+    @property
+    def planform_area(self) -> float:
+        """The body's planform area (m^2): as given, or an ellipse of its length and width."""
+        return self.planform_area_m2 if self.planform_area_m2 is not None else \
+            0.25 * math.pi * self.length_m * self.width_m
 
 
 @dataclass(frozen=True)

@@ -68,9 +68,10 @@ def initial_guess(ac, nodes) -> dict:
                       (zero, zero, zero))
         idx = np.flatnonzero(sel) if sel.dtype == bool else np.asarray(sel)
         stopped = {gm.name: DM(1.0 - active[gm.name][idx]) for gm in ac.groups}
-        b = ac.drag_buildup(vlm, r, DM(rho[sel]), DM(mu[sel]), DM(V[sel]), DM(V[sel] / a_s[sel]), stopped)
+        b = ac.drag_buildup(vlm, r, DM(rho[sel]), DM(mu[sel]), DM(V[sel]), DM(V[sel] / a_s[sel]), stopped,
+                            alpha_body=DM(a_))
         Dn = np.asarray(r["D_i"]).ravel() + np.asarray(b["D_parasite"], float).ravel()   # the model's build-up
-        Ln = np.asarray(r["L"]).ravel() + np.asarray(b["L_stall"], float).ravel()
+        Ln = np.asarray(r["L"]).ravel() + np.asarray(b["L_stall"] + b["L_body"], float).ravel()
         nt = Dn + m * (G0 * np.sin(gam[sel]) + acc[sel])
         nn = m * (G0 * np.cos(gam[sel]) + V[sel] * gdot[sel]) - Ln
         return nt, nn

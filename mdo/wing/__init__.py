@@ -10,7 +10,7 @@ See ``mdo/wing/README.md`` for the model, its conventions and its measured accur
 from .buildup import (BodyComponent, CoolingDrag, DragBuildup, SurfaceComponent, Transition,
                       composite_skin_friction)
 from .camber import camber_line, known_camber_names
-from .drag import Body, body_drag, profile_drag, section_cd, skin_friction
+from .drag import Body, body_drag, crossflow_normal_force, profile_drag, section_cd, skin_friction
 from .geometry import (Params, Section, Surface, aspect_ratio, constant_area, mean_aerodynamic_chord,
                        planform_area, trapezoid)
 from .vlm import VLM
@@ -18,7 +18,7 @@ from .vlm import VLM
 __all__ = [
     "VLM", "Surface", "Section", "trapezoid", "constant_area", "planform_area",
     "mean_aerodynamic_chord", "aspect_ratio", "Params", "camber_line", "known_camber_names",
-    "Body", "body_drag", "profile_drag", "section_cd", "skin_friction",
+    "Body", "body_drag", "crossflow_normal_force", "profile_drag", "section_cd", "skin_friction",
     "DragBuildup", "SurfaceComponent", "BodyComponent", "CoolingDrag", "Transition",
     "composite_skin_friction",
 ]

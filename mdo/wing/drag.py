@@ -47,11 +47,11 @@ import numpy as np
 
 from ..core.errors import InputError
 from .geometry import check_positive, check_range
-from ..core.smooth import is_symbolic, smooth_min, xp
+from ..core.smooth import is_symbolic, smooth_abs, smooth_min, xp
 
 __all__ = [
     "section_drag_table", "section_cd", "profile_drag", "skin_friction", "form_factor_body",
-    "form_factor_nacelle", "form_factor_wing", "body_wetted_area", "Body", "body_drag",
+    "form_factor_nacelle", "form_factor_wing", "body_wetted_area", "Body", "body_drag", "crossflow_normal_force",
 ]
 
 RE_GRID = np.exp(np.linspace(np.log(1e4), np.log(1e8), 17))
@@ -289,6 +289,24 @@ class Body:
     def s_wet(self):
         return self.wetted_area if self.wetted_area is not None else \
             body_wetted_area(self.length, self.diameter, self.kind)
+
+
+def crossflow_normal_force(alpha_rad, q_Pa, planform_area_m2, eta=0.6, cd_crossflow=1.2, width=0.01):
+    """Viscous crossflow normal force (N) of a slender body at angle of attack ``alpha_rad``.
+
+    Allen & Perkins (NACA TR 1048, 1951): each cross-section of the body sees the
+    crossflow ``V sin(alpha)`` and carries the drag of a 2-D cylinder in it, reduced by the
+    finite-length factor ``eta`` (Jorgensen, NASA TR R-474, 1977)::
+
+        N = q eta c_dc S_p sin(alpha) |sin(alpha)|
+
+    normal to the body axis, upward for a positive angle (its drag ``N sin(alpha)`` grows as
+    alpha^3, its lift ``N cos(alpha)`` as alpha^2).  ``|sin(alpha)|`` is smooth,
+    ``sqrt(sin^2 + width^2)`` (width 0.01: a lift slope of ``q eta c_dc S_p 0.01`` per rad
+    at zero, 0.2 % of a wing's of the same area).  The body's potential (Munk) moment is not
+    here: it is the fuselage term of the pitching moment (``mdo.vehicle.balance``)."""
+    s = xp(alpha_rad).sin(alpha_rad)
+    return q_Pa * eta * cd_crossflow * planform_area_m2 * s * smooth_abs(s, width)
 
 
 def body_drag(bodies, V, rho, mu, mach=0.0):
