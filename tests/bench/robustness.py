@@ -7,7 +7,7 @@ within +-spread of its baseline value (fixed seed; clipped to the bounds), then 
 the documented two-stage continuation: the mission analysis with that design frozen
 (mission unknowns from the vehicle's physics-based guesses), then the optimization
 warm-started from it.  Reports how many converge and the spread of the optimized
-energy and design; writes results/robustness.md.  Not collected by pytest.
+energy and design; writes results/robustness/<problem>.md.  Not collected by pytest.
 """
 from __future__ import annotations
 
@@ -91,7 +91,9 @@ def main():
               "|---:|---|---:|---|---:|---:|---:|"]
     for r in rows:
         lines.append(f"| {r[0]} | {r[1]} | {r[2]} | {r[3]} | {r[4]} | {r[5]:.4f} | {r[6]:.0f} |")
-    (ROOT / "results" / "robustness.md").write_text("\n".join(lines) + "\n")
+    out = ROOT / "results" / "robustness" / f"{args.problem}.md"
+    out.parent.mkdir(exist_ok=True)
+    out.write_text("\n".join(lines) + "\n")
     print("\n".join(lines[:8]))
 
 
