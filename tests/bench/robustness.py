@@ -1,17 +1,20 @@
 """Robustness study (issue 11): GA-2P from 20 random starts.
 
     python tests/bench/robustness.py [--starts 20] [--seed 2026] [--spread 0.15] [--problem ga2p]
+                                     [--from-baseline RUN_FOLDER]
 
 Each start draws every design variable (every element of the twist vector) uniformly
 within +-spread of its baseline value (fixed seed; clipped to the bounds), then runs
 the documented two-stage continuation: the mission analysis with that design frozen
 (mission unknowns from the vehicle's physics-based guesses), then the optimization
 warm-started from it.  Reports how many converge and the spread of the optimized
-energy and design; writes results/robustness/<problem>.md.  Not collected by pytest.
+energy and design; writes results/robustness/<problem>.md (and .json: every start's
+drawn and optimized design).  Not collected by pytest.
 """
 from __future__ import annotations
 
 import argparse
+import json
 import statistics
 import sys
 import tempfile
@@ -26,25 +29,56 @@ sys.path.insert(0, str(ROOT))
 from mdo.nlp.run import _import_file  # noqa: E402
 
 
-def one_start(module, rng, spread):
-    probe = module.build(analysis=True)
+def _draw(probe, rng, spread, factor=None):
+    """Every free design variable times 1 + U(-spread, spread) (or times ``factor``), clipped to its bounds."""
     start = {}
     for v in probe.variables.values():
         if v.design and np.any(v.lower != v.upper):
-            f = 1.0 + rng.uniform(-spread, spread, size=v.init.shape)
+            f = factor * np.ones(v.init.shape) if factor else 1.0 + rng.uniform(-spread, spread, size=v.init.shape)
             start[v.name] = np.clip(v.init * f, v.lower, v.upper)
-    an = module.build(analysis=True)
-    for k, val in start.items():
-        an.set_initial(k, val)
-    an.freeze_design()
-    t0 = time.perf_counter()
-    s_an = an.solve(verbose=False)
-    with tempfile.TemporaryDirectory() as tmp:
-        s_an.save(tmp)
-        op = module.build(analysis=False)
-        op.warm_start(Path(tmp) / "solution.json")
-        op.start_from_baseline()     # as mdo run's stage 2
+    return start
+
+
+def _optimize(module, warm, start=None):
+    """Stage 2 as ``mdo run``: the monotone barrier from the baseline, the adaptive barrier
+    if that does not converge (mdo/cli.py ``_adaptive_retry``)."""
+    op = module.build(analysis=False)
+
+    def from_start():
+        op.warm_start(warm)
+        for k, val in (start or {}).items():
+            op.set_initial(k, val)
+
+    from_start()
+    monotone = op.start_from_baseline()
+    s = op.solve(verbose=False)
+    if monotone and not s.success:
+        op.adaptive_barrier_after(s, "monotone")
+        from_start()
         s = op.solve(verbose=False)
+    return s
+
+
+def one_start(module, rng, spread, from_baseline=None, factor=None):
+    """One start: the analysis at the drawn design, then the optimization from it; or, with
+    ``from_baseline`` (a converged baseline's run folder), the optimization started from
+    that baseline's mission with the drawn design (for problems whose baseline needs a
+    script of its own, the TTW)."""
+    probe = module.build(analysis=True)
+    start = _draw(probe, rng, spread, factor)
+    t0 = time.perf_counter()
+    if from_baseline is not None:
+        s_an = None
+        s = _optimize(module, Path(from_baseline) / "solution.json", start)
+    else:
+        an = module.build(analysis=True)
+        for k, val in start.items():
+            an.set_initial(k, val)
+        an.freeze_design()
+        s_an = an.solve(verbose=False)
+        with tempfile.TemporaryDirectory() as tmp:
+            s_an.save(tmp)
+            s = _optimize(module, Path(tmp) / "solution.json")
     wall = time.perf_counter() - t0
     design = {v["name"]: v["value"] for v in s.variables if v["design"]}
     return start, s_an, s, design, wall
@@ -56,23 +90,38 @@ def main():
     ap.add_argument("--starts", type=int, default=20)
     ap.add_argument("--seed", type=int, default=2026)
     ap.add_argument("--spread", type=float, default=0.15)
+    ap.add_argument("--factor", type=float, default=None,
+                    help="one start with every design variable times this factor (e.g. 1.15)")
+    ap.add_argument("--from-baseline", default=None,
+                    help="a converged baseline run folder: start each optimization from its mission")
     args = ap.parse_args()
     module = _import_file(ROOT / "problems" / f"{args.problem}.py")
     rng = np.random.default_rng(args.seed)
+    if args.factor:
+        args.starts = 1
     rows = []
     for i in range(args.starts):
-        start, s_an, s, design, wall = one_start(module, rng, args.spread)
+        start, s_an, s, design, wall = one_start(module, rng, args.spread, args.from_baseline, args.factor)
         e = s.summary_values().get("battery_energy_kWh", float("nan"))
-        rows.append((i, s_an.status, s_an.iterations, s.status, s.iterations, e, wall, design, start))
-        print(f"start {i:2d}: analysis {s_an.status} ({s_an.iterations} it), optimization {s.status} "
-              f"({s.iterations} it), {e:.4f} kWh, {wall:.0f} s", flush=True)
+        an_status, an_it = (s_an.status, s_an.iterations) if s_an is not None else ("(baseline's mission)", 0)
+        fb = s.barrier.get("fallback_from")
+        it = f"{fb['iterations']} monotone + {s.iterations} adaptive" if fb else str(s.iterations)
+        rows.append((i, an_status, an_it, s.status, it, e, wall, design, start))
+        print(f"start {i:2d}: analysis {an_status} ({an_it} it), optimization {s.status} "
+              f"({it} it), {e:.4f} kWh, {wall:.0f} s", flush=True)
     ok = [r for r in rows if r[3] == "Solve_Succeeded"]
     es = np.array([r[5] for r in ok])
-    lines = [f"# Robustness: {args.problem} from {args.starts} random starts", "",
+    drawn = (f"Every design variable x {args.factor:g} (clipped to the bounds); " if args.factor else
              f"Design variables drawn uniformly within +-{100 * args.spread:g} % of the baseline (seed "
-             f"{args.seed}, clipped to the bounds); two-stage continuation per start (mission analysis at the "
-             f"drawn design, then the optimization warm-started from it).  Produced by "
-             f"`python tests/bench/robustness.py`.", "",
+             f"{args.seed}, clipped to the bounds); ")
+    lines = [f"# Robustness: {args.problem} from {args.starts} " + ("start" if args.factor else "random starts"), "",
+             drawn
+             + (f"each optimization started from the mission of the converged baseline `{args.from_baseline}` with "
+                f"the drawn design" if args.from_baseline else
+                "two-stage continuation per start (mission analysis at the drawn design, then the optimization "
+                "warm-started from it)")
+             + "; the monotone barrier first, the adaptive barrier if it does not converge, as `mdo run`.  "
+             f"Produced by `python tests/bench/robustness.py {' '.join(sys.argv[1:])}`.", "",
              f"**{len(ok)} of {args.starts} converged** (IPOPT Solve_Succeeded)."]
     if len(ok):
         spread_pct = 100 * (es.max() - es.min()) / es.min()
@@ -91,9 +140,15 @@ def main():
               "|---:|---|---:|---|---:|---:|---:|"]
     for r in rows:
         lines.append(f"| {r[0]} | {r[1]} | {r[2]} | {r[3]} | {r[4]} | {r[5]:.4f} | {r[6]:.0f} |")
-    out = ROOT / "results" / "robustness" / f"{args.problem}.md"
+    out = ROOT / "results" / "robustness" / (f"{args.problem}" + (f"_x{args.factor:g}" if args.factor else "") + ".md")
     out.parent.mkdir(exist_ok=True)
     out.write_text("\n".join(lines) + "\n")
+    # every start's drawn and optimized design, so that distinct optima can be compared later
+    per_start = [{"start": r[0], "analysis_status": r[1], "optimization_status": r[3], "iterations": r[4],
+                  "battery_energy_kWh": r[5], "wall_s": r[6],
+                  "drawn": {k: np.asarray(v, float).tolist() for k, v in r[8].items()},
+                  "optimized": {k: np.asarray(v, float).tolist() for k, v in r[7].items()}} for r in rows]
+    out.with_suffix(".json").write_text(json.dumps(per_start, indent=1) + "\n")
     print("\n".join(lines[:8]))
 
 
