@@ -54,6 +54,12 @@ Options (``-o KEY=VALUE``): ``nodes`` per segment (6), ``pitch`` (control), ``tr
 ``cells_series``/``cells_parallel`` (150/140), ``max_cell_current_A`` (15) and ``max_charge_current_A`` (4, above), ``swirl_recovery``, ``limits``,
 ``tip_mach_limit``, ``allow_regeneration`` (on here, above), ``n_stations`` (16), ``n_azimuth`` (4, transition
 segments only), ``wing_strips`` (16 per wing), ``mass_model``, ``rotation``, ``coupling``, ``wake_samples`` (5, as GA-2P),
+``trajectory`` ("prescribed": Table 5's speeds and rates; "free": every forward-flight segment's
+speeds and duration are controls within the envelope of ``mdo.mission.trajectory`` - the
+transitions from and to the hover included, the vertical segments kept - with the altitudes and
+the trip's and the reserve's ground distances kept; with ``tilt=control`` the transitions' WMA
+too; ``results/ttw_free/`` and its ``make_optimum.py``, which also frees chosen segments only),
+``max_block_time_min`` (none; with a free trajectory, the mission duration limit),
 ``tol`` (IPOPT's tolerance, 1e-4 here, 1e-6 for the GA problems: at the TTW optimum the
 dual infeasibility stalls at a noise floor of 1e-5 to 3e-4 while the objective holds
 its first 9 digits and the barrier parameter is at its floor, 1e-11 — with 1e-6 IPOPT
@@ -69,13 +75,14 @@ from dataclasses import replace
 from mdo.core.units import DEG, FT, MPH, NMI
 from mdo.mission.profiles import evtol_mission
 from mdo.nlp import Problem
-from mdo.studies import AIRCRAFT_OPTIONS, AIRFRAME_OPTIONS, airframe_variant, minimize_battery_energy
+from mdo.studies import (AIRCRAFT_OPTIONS, AIRFRAME_OPTIONS, TRAJECTORY_OPTIONS, airframe_variant,
+                         minimize_battery_energy, trajectory_envelope)
 from mdo.vehicle.aircraft import Aircraft
 from mdo.vehicle.catalog import ttw
 
 
 # allowed values of the -o options (mdo.nlp.options; `mdo run problems/ttw.py --options`)
-OPTIONS = {**AIRCRAFT_OPTIONS, **AIRFRAME_OPTIONS,
+OPTIONS = {**AIRCRAFT_OPTIONS, **AIRFRAME_OPTIONS, **TRAJECTORY_OPTIONS,
     "max_cell_current_A": (float, 1.0, 60.0),
     "max_charge_current_A": (float, 0.1, 20.0),
     "n_azimuth": (int, 1, 12),
@@ -120,7 +127,8 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
           wake_samples: int = 5, tol: float = 1e-4, pitch: str = "control",
           motor_model: str = "pmsm", sections: str = "as_defined", leakage_fraction: float | None = None,
           nacelle_slipstream: bool = True, cooling_drag: bool = True, airframe_calibration: float | None = None,
-          tilt: str = "schedule", cabin_attitude_deg: float | None = None, trim: bool = True):
+          tilt: str = "schedule", cabin_attitude_deg: float | None = None, trim: bool = True,
+          trajectory: str = "prescribed", max_block_time_min: float | None = None):
     p = Problem("ttw", "TTW tandem tilt-wing whole-mission optimization (Clarke et al. Eq. 7)")
     cfg = ttw(rotation)
     cfg = replace(cfg, battery=replace(cfg.battery, cells_series=cells_series, cells_parallel=cells_parallel,
@@ -138,7 +146,8 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
     mission = evtol_mission(vehicle, nodes=nodes, cruise_distance_m=cruise_distance_nmi * NMI, **attitude,
                             reserve_cruise_distance_m=reserve_cruise_distance_nmi * NMI,
                             cruise_altitude_m=cruise_altitude_ft * FT,
-                            cruise_speed_mps=cruise_speed_mph * MPH).build(p)
+                            cruise_speed_mps=cruise_speed_mph * MPH, trajectory=trajectory,
+                            envelope=trajectory_envelope(max_block_time_min)).build(p)
     p = minimize_battery_energy(p, vehicle, mission)
     p.ipopt_options["tol"] = float(tol)
     p.ipopt_options["acceptable_tol"] = max(1e-3, 10 * float(tol))

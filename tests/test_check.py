@@ -68,6 +68,25 @@ def test_active_limits_with_multipliers(good):
     assert g["y_floor"]["labels"] == ["a", "b"] and len(g["y_floor"]["multiplier"]) == 2
 
 
+def test_a_looser_tolerance_still_reports_what_pushes(good):
+    """A solve ended at a loose tolerance leaves an active element a scaled slack of order
+    sqrt(mu) (here 0.02 rad / scale 3) with its multiplier; an element as far from its limit
+    with a multiplier of mu / slack is not active; a solve that did not converge keeps the
+    strict slack rule."""
+    from types import SimpleNamespace
+    from mdo.nlp.solution import active_limits
+    sol = json.loads((good / "solution.json").read_text())
+    g = next(c for c in sol["constraints"] if c["name"] == "y_floor")
+    g["lhs"] = [0.5 + 0.02 * 3, 0.5 + 0.02 * 3]    # both elements 0.02 (scaled) above their floor
+    g["multiplier"] = [-1.0, -1e-4]                 # a: pushes (1 m^2 per rad); b: mu / slack
+    def active(success):
+        ns = SimpleNamespace(variables=sol["variables"], constraints=sol["constraints"], success=success,
+                             objective_unit=sol["objective"]["unit"], objective_scale=sol["objective"]["scale"])
+        return {a["where"] for a in active_limits(ns) if a["name"] == "y_floor"}
+    assert active(True) == {"a"}
+    assert active(False) == set()
+
+
 def test_angles_read_in_degrees():
     p = Problem("angles")
     a = p.variable("twist", unit="rad", lower=-0.5, upper=0.5, init=0.1, design=True)

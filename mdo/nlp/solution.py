@@ -26,6 +26,12 @@ __all__ = ["Solution", "write_atomic", "active_limits", "limiting_constraints", 
 # slacks of order mu ~ tol = 1e-6 on the scaled problem, so 1e-5 separates at-the-limit
 # from clear of it)
 ACTIVE_SLACK = 1e-5
+# ... or whose scaled multiplier is at least ACTIVE_RATIO x its scaled slack and at least
+# ACTIVE_PUSH: a solve ended at a looser tolerance (the TTW's 1e-4) leaves the barrier
+# parameter mu near 1e-5 and an active element's slack s ~ mu / lambda of order 1e-2, while
+# an inactive one has lambda ~ mu / s << s.  lambda >= 0.1 s means s <= sqrt(10 mu).
+ACTIVE_RATIO = 0.1
+ACTIVE_PUSH = 1e-4
 # a design variable within this fraction of its bound is reported as bound-limited (#16 item 5)
 DESIGN_BOUND_FRACTION = 0.01
 
@@ -396,7 +402,9 @@ def _variable_arrays(v: dict):
 def active_limits(sol: "Solution") -> list:
     """What limits the design (#16 item 5): every design-variable bound within
     ``DESIGN_BOUND_FRACTION`` of the value, every other variable at a bound that pushes
-    (multiplier of the scaled problem > 1e-6), every active inequality element.
+    (multiplier of the scaled problem > 1e-6), every active inequality element (scaled
+    slack <= ``ACTIVE_SLACK``, or a scaled multiplier >= ``ACTIVE_RATIO`` x the slack and
+    >= ``ACTIVE_PUSH``: what a solve at a looser tolerance leaves at its limits).
 
     ``multiplier`` is |d objective / d limit| in objective units per unit of the
     limit: what relaxing it by one unit would gain (first order)."""
@@ -425,7 +433,11 @@ def active_limits(sol: "Solution") -> list:
         lhs, rhs = group_values(c)
         slack = -r if c["kind"] == "<=" else r
         m = np.asarray([np.nan if x is None else x for x in c["multiplier"]], float)
-        for i in np.flatnonzero(np.isfinite(slack) & (slack <= ACTIVE_SLACK)):
+        lam = np.abs(m) * np.abs(np.broadcast_to(np.asarray(c["scale"], float), m.shape)) / sol.objective_scale
+        # the multiplier rule only where the solve converged (mid-way, mu is large and every
+        # element near its limit carries a multiplier of mu / slack)
+        pushed = (np.nan_to_num(lam) >= np.maximum(ACTIVE_RATIO * slack, ACTIVE_PUSH)) & bool(getattr(sol, "success", True))
+        for i in np.flatnonzero(np.isfinite(slack) & ((slack <= ACTIVE_SLACK) | pushed)):
             out.append({"name": c["name"], "kind": "constraint", "where": c["labels"][i],
                         "multiplier": float(abs(m[i])), "unit": f"{fu} per {c['unit']}",
                         "value": float(lhs[i]), "limit": float(rhs[i]), "design": False})
