@@ -2,6 +2,7 @@
 
     python tests/bench/robustness.py [--starts 20] [--seed 2026] [--spread 0.15] [--problem ga2p]
                                      [--from-baseline RUN_FOLDER]
+                                     [--factor F] [--first K] [--out PATH]
 
 Each start draws every design variable (every element of the twist vector) uniformly
 within +-spread of its baseline value (fixed seed; clipped to the bounds), then runs
@@ -92,6 +93,9 @@ def main():
     ap.add_argument("--spread", type=float, default=0.15)
     ap.add_argument("--factor", type=float, default=None,
                     help="one start with every design variable times this factor (e.g. 1.15)")
+    ap.add_argument("--first", type=int, default=0,
+                    help="skip the first K draws of the seed (to continue a study in another process)")
+    ap.add_argument("--out", default=None, help="the report's path (default results/robustness/<problem>.md)")
     ap.add_argument("--from-baseline", default=None,
                     help="a converged baseline run folder: start each optimization from its mission")
     args = ap.parse_args()
@@ -100,7 +104,12 @@ def main():
     if args.factor:
         args.starts = 1
     rows = []
-    for i in range(args.starts):
+    if args.first:   # the same draws as a study from start 0: discard the first K
+        probe = module.build(analysis=True)
+        for _ in range(args.first):
+            _draw(probe, rng, args.spread, args.factor)
+        del probe
+    for i in range(args.first, args.first + args.starts):
         start, s_an, s, design, wall = one_start(module, rng, args.spread, args.from_baseline, args.factor)
         e = s.summary_values().get("battery_energy_kWh", float("nan"))
         an_status, an_it = (s_an.status, s_an.iterations) if s_an is not None else ("(baseline's mission)", 0)
@@ -140,7 +149,8 @@ def main():
               "|---:|---|---:|---|---:|---:|---:|"]
     for r in rows:
         lines.append(f"| {r[0]} | {r[1]} | {r[2]} | {r[3]} | {r[4]} | {r[5]:.4f} | {r[6]:.0f} |")
-    out = ROOT / "results" / "robustness" / (f"{args.problem}" + (f"_x{args.factor:g}" if args.factor else "") + ".md")
+    out = Path(args.out) if args.out else \
+        ROOT / "results" / "robustness" / (f"{args.problem}" + (f"_x{args.factor:g}" if args.factor else "") + ".md")
     out.parent.mkdir(exist_ok=True)
     out.write_text("\n".join(lines) + "\n")
     # every start's drawn and optimized design, so that distinct optima can be compared later
