@@ -69,3 +69,17 @@ def test_optimum_is_the_committed_result(tmp_path, problem):
         committed = json.loads((ROOT / "results" / problem / sub / "summary.json").read_text())
         _compare(json.loads((out / sub / "summary.json").read_text()), committed, f"results/{problem}/{sub}")
     assert fresh["status"] == "Solve_Succeeded"
+
+
+def test_every_committed_converged_run_passes_mdo_check(capsys):
+    """Issue 16's acceptance: `mdo check` passes on every committed run folder that claims
+    a converged solve, and each carries its `summary.json["active"]`."""
+    from mdo.nlp.check import check_run
+    folders = [sj.parent for sj in sorted((ROOT / "results").rglob("solution.json"))
+               if json.loads(sj.read_text()).get("success")]
+    assert len(folders) >= 10
+    failed = [str(d.relative_to(ROOT)) for d in folders if check_run(d) != 0]
+    assert not failed, f"mdo check fails on {failed}"
+    missing = [str(d.relative_to(ROOT)) for d in folders if (d / "summary.json").exists()
+               and "active" not in json.loads((d / "summary.json").read_text())]
+    assert not missing, f"no summary.json['active'] in {missing}"
