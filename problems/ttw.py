@@ -59,7 +59,9 @@ speeds and duration are controls within the envelope of ``mdo.mission.trajectory
 transitions from and to the hover included, the vertical segments kept - with the altitudes and
 the trip's and the reserve's ground distances kept; with ``tilt=control`` the transitions' WMA
 too; ``results/ttw_free/`` and its ``make_optimum.py``, which also frees chosen segments only),
-``max_block_time_min`` (none; with a free trajectory, the mission duration limit),
+``max_block_time_min`` (none; with a free trajectory, the mission duration limit), ``max_span_m``
+(none: each wing's span within 0.6-1.6x its baseline, ``DesignBounds``; a vertiport's or hangar's
+limit on both wings' span when given),
 ``tol`` (IPOPT's tolerance, 1e-4 here, 1e-6 for the GA problems: at the TTW optimum the
 dual infeasibility stalls at a noise floor of 1e-5 to 3e-4 while the objective holds
 its first 9 digits and the barrier parameter is at its floor, 1e-11 — with 1e-6 IPOPT
@@ -90,6 +92,7 @@ OPTIONS = {**AIRCRAFT_OPTIONS, **AIRFRAME_OPTIONS, **TRAJECTORY_OPTIONS,
     "pitch": (str, "control", "schedule"),
     "tilt": (str, "schedule", "control"),
     "cabin_attitude_deg": (float, 2.0, 60.0),
+    "max_span_m": (float, 5.0, 30.0),
 }
 
 
@@ -128,7 +131,8 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
           motor_model: str = "pmsm", sections: str = "as_defined", leakage_fraction: float | None = None,
           nacelle_slipstream: bool = True, cooling_drag: bool = True, airframe_calibration: float | None = None,
           tilt: str = "schedule", cabin_attitude_deg: float | None = None, trim: bool = True,
-          trajectory: str = "prescribed", max_block_time_min: float | None = None):
+          trajectory: str = "prescribed", max_block_time_min: float | None = None,
+          max_span_m: float | None = None):
     p = Problem("ttw", "TTW tandem tilt-wing whole-mission optimization (Clarke et al. Eq. 7)")
     cfg = ttw(rotation)
     cfg = replace(cfg, battery=replace(cfg.battery, cells_series=cells_series, cells_parallel=cells_parallel,
@@ -140,7 +144,8 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
     vehicle = Aircraft(cfg, trim=trim, n_stations=n_stations, n_azimuth=n_azimuth, wing_strips=wing_strips,
                        mass_model=mass_model, coupling=coupling, swirl_recovery=swirl_recovery, limits=limits,
                        tip_mach_limit=tip_mach_limit, allow_regeneration=allow_regeneration,
-                       design_point_constraints=not analysis, wake_samples=wake_samples, pitch=pitch, tilt=tilt)
+                       design_point_constraints=not analysis, wake_samples=wake_samples, pitch=pitch, tilt=tilt,
+                       max_span_m=max_span_m)
     attitude = {} if cabin_attitude_deg is None else \
         {"body_angle_bounds_rad": (-cabin_attitude_deg * DEG, cabin_attitude_deg * DEG)}
     mission = evtol_mission(vehicle, nodes=nodes, cruise_distance_m=cruise_distance_nmi * NMI, **attitude,

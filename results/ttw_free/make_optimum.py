@@ -1,13 +1,14 @@
 """How results/ttw_free/ (the TTW optimized with a free trajectory) was made, from the repository root:
 
     python results/ttw_free/make_optimum.py OUT_DIR [--segments SEGMENTS] [--start SOLUTION_JSON]
-                                                    [--tilt control]
+                                                    [--tilt control] [--max-block-time-min T]
 
 --segments: ``all`` (default: ``-o trajectory=free``, every forward-flight segment the
 rules allow, the transitions included) or a comma-separated list of Table 5 segments to
 free (e.g. ``CL,CR,D,RCL,RCR,RD``: the wing-borne ones; the others keep Table 5).
 
 ``--tilt control``: the transitions' wing tilt (WMA) a control too (issue 22 item 3).
+``--max-block-time-min T``: the mission (departure to landing) within T minutes.
 
 The optimization (design free) starts from the prescribed-profile optimum
 (default ``--start results/ttw/solution.json``: a partial warm start, the freed speeds and
@@ -32,9 +33,11 @@ ap.add_argument("out")
 ap.add_argument("--segments", default="all")
 ap.add_argument("--start", default=str(ROOT / "results/ttw/solution.json"))
 ap.add_argument("--tilt", default="schedule", choices=("schedule", "control"))
+ap.add_argument("--max-block-time-min", type=float, default=None, help="the mission duration limit (min)")
 args = ap.parse_args()
 trajectory = "free" if args.segments == "all" else {s: "free" for s in args.segments.split(",")}
-problem = _import_file(ROOT / "problems" / "ttw.py").build(analysis=False, trajectory=trajectory, tilt=args.tilt)
+problem = _import_file(ROOT / "problems" / "ttw.py").build(analysis=False, trajectory=trajectory, tilt=args.tilt,
+                                                       max_block_time_min=args.max_block_time_min)
 print(problem.size(), flush=True)
 print(problem.warm_start(args.start, partial=True, multipliers=False).describe(), flush=True)
 problem.start_from_baseline()
