@@ -36,6 +36,7 @@ AIRCRAFT_OPTIONS = {
 TRAJECTORY_OPTIONS = {
     "trajectory": (str, "prescribed", "free"),
     "max_block_time_min": (float, 1.0, 1000.0),
+    "min_climb_gradient_pct": (float, 0.0, 50.0),
 }
 
 
@@ -75,10 +76,12 @@ def airframe_variant(cfg, motor_model: str = "pmsm", sections: str = "as_defined
     return replace(cfg, rotor_groups=groups, wings=wings, drag=drag, mass_inputs=mass_inputs)
 
 
-def trajectory_envelope(max_block_time_min=None):
-    """The default free-trajectory ``Envelope`` with the problem's block-time option (min)."""
+def trajectory_envelope(max_block_time_min=None, min_climb_gradient_pct=None):
+    """The default free-trajectory ``Envelope`` with the problem's block-time option (min) and
+    climb-gradient rule (percent; default ``Envelope.min_climb_gradient``, 14 CFR 23.65's 8.3 %)."""
     from .mission.trajectory import Envelope
-    return Envelope(max_block_time_s=None if max_block_time_min is None else max_block_time_min * 60.0)
+    extra = {} if min_climb_gradient_pct is None else {"min_climb_gradient": min_climb_gradient_pct / 100.0}
+    return Envelope(max_block_time_s=None if max_block_time_min is None else max_block_time_min * 60.0, **extra)
 
 
 def minimize_battery_energy(problem, vehicle, mission, *, max_iter: int = 500):

@@ -25,8 +25,9 @@ gear and flap drag the pilot may add on BL and FA, a control per node; without i
 without battery charging the clean airframe cannot slow down on the base leg), ``wake_samples`` (5),
 ``trajectory`` ("prescribed": Table 5's speeds and rates; "free": every segment's speeds and
 duration are controls within the envelope of ``mdo.mission.trajectory``, the altitudes and the
-trip's ground distance kept), ``max_block_time_min`` (none; with a free trajectory, the mission
-duration limit).
+trip's ground distance kept), ``min_climb_gradient_pct`` (8.3: 14 CFR 23.65's take-off climb
+gradient on the freed climbs; a powered-lift vehicle's designer may state another rule), ``max_block_time_min`` (none; with a
+free trajectory, the mission duration limit).
 ``motor_model`` ("pmsm", or "dc": the paper's DC motor behind a 0.95 ESC), ``sections``
 ("as_defined": the catalog's tripped sections; "free_transition": the XFOIL polars), ``leakage_fraction``
 (0.10), ``nacelle_slipstream`` (true), ``cooling_drag`` (true), ``airframe_calibration`` (the
@@ -58,7 +59,7 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
           coupling: str = "swirl", swirl_recovery: str = "bounded", limits: bool = True,
           tip_mach_limit: str = "nodes", allow_regeneration: bool = False, max_span_m: float | None = None,
           approach_drag_area_m2: float = 0.40, wake_samples: int = 5, trajectory: str = "prescribed",
-          max_block_time_min: float | None = None,
+          max_block_time_min: float | None = None, min_climb_gradient_pct: float | None = None,
           motor_model: str = "pmsm", sections: str = "as_defined", leakage_fraction: float | None = None,
           nacelle_slipstream: bool = True, cooling_drag: bool = True, airframe_calibration: float | None = None,
           trim: bool = True):
@@ -76,5 +77,5 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
                          reserve_cruise_distance_m=reserve_cruise_distance_nmi * NMI,
                          cruise_altitude_m=cruise_altitude_ft * FT, cruise_speed_mps=cruise_speed_mph * MPH,
                          approach_drag_area_m2=approach_drag_area_m2, trajectory=trajectory,
-                         envelope=trajectory_envelope(max_block_time_min)).build(p)
+                         envelope=trajectory_envelope(max_block_time_min, min_climb_gradient_pct)).build(p)
     return minimize_battery_energy(p, vehicle, mission)

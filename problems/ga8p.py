@@ -34,7 +34,7 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
           coupling: str = "swirl", swirl_recovery: str = "bounded", limits: bool = True,
           tip_mach_limit: str = "nodes", allow_regeneration: bool = False, max_span_m: float | None = None,
           approach_drag_area_m2: float = 0.40, wake_samples: int = 5, trajectory: str = "prescribed",
-          max_block_time_min: float | None = None,
+          max_block_time_min: float | None = None, min_climb_gradient_pct: float | None = None,
           motor_model: str = "pmsm", sections: str = "as_defined", leakage_fraction: float | None = None,
           nacelle_slipstream: bool = True, cooling_drag: bool = True, airframe_calibration: float | None = None,
           trim: bool = True):
@@ -52,5 +52,5 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
                          reserve_cruise_distance_m=reserve_cruise_distance_nmi * NMI,
                          cruise_altitude_m=cruise_altitude_ft * FT, cruise_speed_mps=cruise_speed_mph * MPH,
                          approach_drag_area_m2=approach_drag_area_m2, trajectory=trajectory,
-                         envelope=trajectory_envelope(max_block_time_min)).build(p)
+                         envelope=trajectory_envelope(max_block_time_min, min_climb_gradient_pct)).build(p)
     return minimize_battery_energy(p, vehicle, mission)

@@ -59,7 +59,9 @@ speeds and duration are controls within the envelope of ``mdo.mission.trajectory
 transitions from and to the hover included, the vertical segments kept - with the altitudes and
 the trip's and the reserve's ground distances kept; with ``tilt=control`` the transitions' WMA
 too; ``results/ttw_free/`` and its ``make_optimum.py``, which also frees chosen segments only),
-``max_block_time_min`` (none; with a free trajectory, the mission duration limit), ``max_span_m``
+``min_climb_gradient_pct`` (8.3: 14 CFR 23.65's take-off climb gradient on the freed climbs; a
+powered-lift vehicle's designer may state another rule), ``max_block_time_min`` (none; with a
+free trajectory, the mission duration limit), ``max_span_m``
 (none: each wing's span within 0.6-1.6x its baseline, ``DesignBounds``; a vertiport's or hangar's
 limit on both wings' span when given),
 ``tol`` (IPOPT's tolerance, 1e-4 here, 1e-6 for the GA problems: at the TTW optimum the
@@ -132,7 +134,7 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
           nacelle_slipstream: bool = True, cooling_drag: bool = True, airframe_calibration: float | None = None,
           tilt: str = "schedule", cabin_attitude_deg: float | None = None, trim: bool = True,
           trajectory: str = "prescribed", max_block_time_min: float | None = None,
-          max_span_m: float | None = None):
+          min_climb_gradient_pct: float | None = None, max_span_m: float | None = None):
     p = Problem("ttw", "TTW tandem tilt-wing whole-mission optimization (Clarke et al. Eq. 7)")
     cfg = ttw(rotation)
     cfg = replace(cfg, battery=replace(cfg.battery, cells_series=cells_series, cells_parallel=cells_parallel,
@@ -152,7 +154,7 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
                             reserve_cruise_distance_m=reserve_cruise_distance_nmi * NMI,
                             cruise_altitude_m=cruise_altitude_ft * FT,
                             cruise_speed_mps=cruise_speed_mph * MPH, trajectory=trajectory,
-                            envelope=trajectory_envelope(max_block_time_min)).build(p)
+                            envelope=trajectory_envelope(max_block_time_min, min_climb_gradient_pct)).build(p)
     p = minimize_battery_energy(p, vehicle, mission)
     p.ipopt_options["tol"] = float(tol)
     p.ipopt_options["acceptable_tol"] = max(1e-3, 10 * float(tol))

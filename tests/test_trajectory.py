@@ -160,3 +160,14 @@ def test_envelope_values_are_checked():
         Envelope(stall_speed_factor=0.5)
     with pytest.raises(InputError, match="envelope.duration_range"):
         Envelope(duration_range=(2.0, 3.0))
+
+
+def test_the_problems_climb_gradient_rule_is_an_option():
+    """`-o min_climb_gradient_pct=G` (percent) reaches the envelope; out of range is refused."""
+    from mdo.studies import TRAJECTORY_OPTIONS, trajectory_envelope
+    assert trajectory_envelope().min_climb_gradient == pytest.approx(0.083)
+    assert trajectory_envelope(None, 3.0).min_climb_gradient == pytest.approx(0.03)
+    assert trajectory_envelope(40.0, 5.0).max_block_time_s == pytest.approx(2400.0)
+    assert TRAJECTORY_OPTIONS["min_climb_gradient_pct"] == (float, 0.0, 50.0)
+    with pytest.raises(InputError, match="envelope.min_climb_gradient"):
+        trajectory_envelope(None, 60.0)
