@@ -25,13 +25,49 @@ iterations without converging (adaptive barrier, 2026-12-04; the Table 5 profile
 climb at a 5 % gradient where the envelope asks 8.3 %).
 """
 import argparse
+import csv
 import sys
 from pathlib import Path
+
+import numpy as np
 
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT))
 
 from mdo.nlp.run import _import_file, solve_into  # noqa: E402
+
+
+
+def continuous_tilt_start(problem, start_folder):
+    """With ``--tilt control`` from a fixed-tilt solution: the tilt starts continuous (linear
+    in time within each controlled segment between its joins: a prescribed neighbour's
+    angle, else the later segment's Table 5 angle; Table 5 steps between segments, which the
+    control's continuity forbids), and the body angle moves by the opposite amount, so the
+    wing and rotors see the start's angles (body + tilt) and its forces."""
+    rows = list(csv.DictReader(open(Path(start_folder) / "mission.csv")))
+    seg = [r["segment"] for r in rows]
+    wma = np.radians([float(r["wing_mounted_angle_deg"]) for r in rows])
+    body = np.radians([float(r["body_angle_deg"]) for r in rows])
+    on = np.array([float(r["wing_tilt_control"]) > 0 for r in rows])
+    names = list(dict.fromkeys(seg))
+    first = {n: seg.index(n) for n in names}
+    last = {n: len(seg) - 1 - seg[::-1].index(n) for n in names}
+    tilt = wma.copy()
+    for i, n in enumerate(names):
+        a, b = first[n], last[n]
+        if not on[a]:
+            continue
+        prev = names[i - 1] if i > 0 else None
+        nxt = names[i + 1] if i + 1 < len(names) else None
+        t0 = wma[a] if prev is None or on[first[prev]] else wma[last[prev]]
+        t1 = wma[b] if nxt is None else (wma[first[nxt]])
+        t = np.array([float(rows[k]["time_s"]) for k in range(a, b + 1)])
+        tilt[a:b + 1] = t0 + (t1 - t0) * (t - t[0]) / (t[-1] - t[0])
+    var = problem.variables["wing_tilt"]
+    index = {f"{r['segment']} node {r['node']}": k for k, r in enumerate(rows)}
+    problem.set_initial("wing_tilt", np.array([[tilt[index[lab]] for lab in var.labels]]))
+    problem.set_initial("body_angle", (body + wma - tilt).reshape(1, -1))
+
 
 ap = argparse.ArgumentParser()
 ap.add_argument("out")
@@ -51,6 +87,8 @@ problem = _import_file(ROOT / "problems" / "ttw.py").build(analysis=False, traje
                                                        min_climb_gradient_pct=args.min_climb_gradient_pct)
 print(problem.size(), flush=True)
 print(problem.warm_start(args.start, partial=True, multipliers=False).describe(), flush=True)
+if args.tilt == "control" and '"wing_tilt"' not in Path(args.start).read_text():
+    continuous_tilt_start(problem, Path(args.start).parent)   # a fixed-tilt start
 problem.start_from_baseline()
 sol = solve_into(problem, args.out, verbose=True, max_iter=400)
 print(sol.status, sol.iterations, sol.objective, flush=True)
