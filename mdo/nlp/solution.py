@@ -436,7 +436,8 @@ def active_limits(sol: "Solution") -> list:
         lam = np.abs(m) * np.abs(np.broadcast_to(np.asarray(c["scale"], float), m.shape)) / sol.objective_scale
         # the multiplier rule only where the solve converged (mid-way, mu is large and every
         # element near its limit carries a multiplier of mu / slack)
-        pushed = (np.nan_to_num(lam) >= np.maximum(ACTIVE_RATIO * slack, ACTIVE_PUSH)) & bool(getattr(sol, "success", True))
+        converged = bool(getattr(sol, "success", True))
+        pushed = converged & (np.nan_to_num(lam) >= np.maximum(ACTIVE_RATIO * slack, ACTIVE_PUSH))
         for i in np.flatnonzero(np.isfinite(slack) & ((slack <= ACTIVE_SLACK) | pushed)):
             out.append({"name": c["name"], "kind": "constraint", "where": c["labels"][i],
                         "multiplier": float(abs(m[i])), "unit": f"{fu} per {c['unit']}",

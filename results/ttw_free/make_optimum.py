@@ -34,6 +34,7 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT))
 
+from mdo.nlp.problem import read_solution  # noqa: E402
 from mdo.nlp.run import _import_file, solve_into  # noqa: E402
 
 
@@ -87,7 +88,8 @@ problem = _import_file(ROOT / "problems" / "ttw.py").build(analysis=False, traje
                                                        min_climb_gradient_pct=args.min_climb_gradient_pct)
 print(problem.size(), flush=True)
 print(problem.warm_start(args.start, partial=True, multipliers=False).describe(), flush=True)
-if args.tilt == "control" and '"wing_tilt"' not in Path(args.start).read_text():
+start_names = {v["name"] for v in read_solution(Path(args.start))["variables"]}
+if args.tilt == "control" and "wing_tilt" not in start_names:
     continuous_tilt_start(problem, Path(args.start).parent)   # a fixed-tilt start
 problem.start_from_baseline()
 sol = solve_into(problem, args.out, verbose=True, max_iter=400)
