@@ -32,6 +32,7 @@ from pathlib import Path
 
 import numpy as np
 
+from mdo.core.atmosphere import kinematic_viscosity
 from mdo.rotor import RotorGeometry, analyze
 from mdo.rotor.geometry import DATA_DIR
 
@@ -124,6 +125,50 @@ def sensitivities(prop: Prop) -> list:
     return rows
 
 
+TREND_J = (0.3, 0.45, 0.55, 0.65)
+
+
+def reynolds_trend(prop: Prop, m: dict) -> list:
+    """CT and CP at fixed advance ratios, per UIUC run (data interpolated linearly in J
+    within the run's range; the model run at the same J and rpm): rows (J, rpm, Re at
+    0.75 R, CT data, CT model, CP data, CP model).  At fixed J the blade sees the same
+    angles at every rpm, so what changes along a column is the Reynolds number (and
+    the tip Mach number, below 0.25 here): the trend the sections' polars must carry."""
+    d, rot = m["data"], m["rotor"]
+    c75 = float(np.interp(0.75, rot.r_over_R, rot.chord_over_R)) * rot.radius_m
+    nu = float(kinematic_viscosity(0.0))
+    rows = []
+    for J in TREND_J:
+        for rpm in np.unique(d["rpm"]):
+            s = d["rpm"] == rpm
+            if not d["J"][s].min() <= J <= d["J"][s].max():
+                continue
+            n = rpm / 60.0
+            r = analyze(rot, omega_radps=np.array([2 * math.pi * n]), v_axial_mps=np.array([J * n * prop.diameter_m]),
+                        n_stations=N_STATIONS, pitch_rad=rot.pitch_offset_rad)
+            w75 = math.hypot(J * n * prop.diameter_m, 2 * math.pi * n * 0.75 * prop.diameter_m / 2)
+            rows.append((J, int(rpm), w75 * c75 / nu,
+                         float(np.interp(J, d["J"][s], d["CT"][s])), float(np.ravel(r["CT"])[0]),
+                         float(np.interp(J, d["J"][s], d["CP"][s])), float(np.ravel(r["CP"])[0])))
+    return rows
+
+
+def _trend_lines(rows: list) -> list:
+    lines = ["", "## Reynolds trend at fixed advance ratio", "",
+             "At a fixed J the blade sees the same angles at every rpm, so along each J the change is the "
+             "Reynolds number's (Re at 0.75 R from the unaccelerated relative speed).  Change from the "
+             "lowest rpm of that J.  Where the data's change exceeds the model's, the blade's sections gain more "
+             "from Reynolds number than the polars they are modelled with (XFOIL, free transition):", "",
+             "| J | rpm | Re 0.75R | CT data | CT model | CT data change | CT model change | CP data | CP model |",
+             "|---|---:|---:|---:|---:|---:|---:|---:|---:|"]
+    first = {}
+    for J, rpm, re, ctd, ctm, cpd, cpm in rows:
+        f = first.setdefault(J, (ctd, ctm))
+        lines.append(f"| {J:.2f} | {rpm} | {re:.2g} | {ctd:.4f} | {ctm:.4f} | {100 * (ctd / f[0] - 1):+.0f} % | "
+                     f"{100 * (ctm / f[1] - 1):+.0f} % | {cpd:.4f} | {cpm:.4f} |")
+    return lines
+
+
 def write_outputs(prop: Prop, out_dir: Path = OUT_DIR, with_sensitivity: bool = True) -> dict:
     """Figure, per-point errors, static table and the markdown summary of one propeller."""
     out_dir.mkdir(parents=True, exist_ok=True)
@@ -169,6 +214,7 @@ def write_outputs(prop: Prop, out_dir: Path = OUT_DIR, with_sensitivity: bool = 
                   "| variant | CT bias J<=0.7 | CP bias J<=0.7 | static CT bias | static CP bias |", "|---|---|---|---|---|"]
         for row in sensitivities(prop):
             lines.append(f"| {row[0]} | " + " | ".join(f"{100 * v:+.1f} %" for v in row[1:]) + " |")
+    lines += _trend_lines(reynolds_trend(prop, main))
     lines += ["", f"Files: {stem}.png, {stem}_errors.csv (every point), {stem}_static.csv."]
     (out_dir / f"{stem}_summary.md").write_text("\n".join(lines) + "\n")
     return {"table": t, "baseline": tb}
