@@ -173,11 +173,10 @@ def _run_stages(args, options, folder, ws_data, progress) -> int:
         raise RunError(f"--from-baseline: {args.problem} has no free design variables to optimize")
     if staged and given is not None:   # --from-baseline: stage 1 is the user's converged analysis (copied)
         shutil.copytree(args.from_baseline, folder.stage / "analysis")
-        load_warm_start(problem, given)
+        load_warm_start(problem, given)   # checked before anything else happens
         print(f"mdo: stage 1 of 2 taken from {args.from_baseline} (copied into analysis/): "
               f"{given['objective']['value']:.6g} {given['objective'].get('unit', '')}")
         baseline_sol = given
-        monotone = problem.start_from_baseline()
     elif ws_data is None and (staged or args.analysis):
         code = _relaxed_start(args, options, problem if args.analysis else None, folder, progress)
         if code is not None:
@@ -197,42 +196,49 @@ def _run_stages(args, options, folder, ws_data, progress) -> int:
                 print("mdo: the baseline analysis did not converge, so the optimization was not started; "
                       "fix the baseline or pass --no-baseline", file=sys.stderr)
             return code
-        load_warm_start(problem, sol)
         baseline_sol = sol
-        monotone = problem.start_from_baseline()      # monotone barrier from the converged mission
     what = "analysis, design frozen" if args.analysis else "optimization"
     if staged:
-        what = f"stage 2 of 2: {what}, from the baseline"
-    code, sol = _solve_stage(problem, folder.stage, args, what, progress)
-    if staged and monotone and code == 1 and not (args.max_iter is not None and
-                                                  sol.status == "Maximum_Iterations_Exceeded"):
-        code, sol = _adaptive_retry(problem, baseline_sol, sol, folder, args, what, progress)
+        code, sol = _optimize_from(problem, baseline_sol, folder, args, f"stage 2 of 2: {what}, from the baseline",
+                                   progress)
+    else:
+        code, sol = _solve_stage(problem, folder.stage, args, what, progress)
     where = folder.commit(sol.success, sol.status)
     _final_report(sol, where, folder, code, what)
     return code
 
 
-def _adaptive_retry(problem, baseline_sol, failed, folder, args, what, progress) -> tuple:
-    """DESIGN rule 7's fallback: the monotone barrier from the baseline ended without an
-    optimum (not an interrupt, not an iteration limit the user set with --max-iter; the
-    problem's own limit counts as a failure: GA-2P at 170 mph wanders 500 iterations with
-    the monotone barrier), so its files move to
-    ``monotone/`` in the stage and the optimization starts again from the baseline with
-    IPOPT's adaptive barrier (GA-4P: monotone ends in a local infeasibility, adaptive
-    converges).  The new ``summary.json["barrier"]`` records the failed attempt."""
-    from .nlp.run import load_warm_start
+def _optimize_from(problem, baseline_sol, folder, args, what, progress) -> tuple:
+    """Stage 2 from the converged baseline with DESIGN rule 7's fallback
+    (``mdo.nlp.run.optimize_from_baseline``): the monotone barrier first; if it ends
+    without an optimum (not an interrupt, not an iteration limit the user set with
+    --max-iter; the problem's own limit counts as a failure: GA-2P at 170 mph wanders 500
+    iterations with the monotone barrier), its files move to ``monotone/`` in the stage and
+    the optimization starts again from the baseline with IPOPT's adaptive barrier (GA-4P:
+    monotone ends in a local infeasibility, adaptive converges)."""
+    from .nlp.run import load_warm_start, optimize_from_baseline
 
-    kept = folder.stage / "monotone"
-    kept.mkdir()
-    for f in list(folder.stage.iterdir()):
-        if f.name not in ("analysis", "monotone", "INCOMPLETE.txt"):
-            f.rename(kept / f.name)
-    why = f" ({failed.stopped_because})" if failed.stopped_because else ""
-    print(f"mdo: the monotone barrier ended {failed.status} after {failed.iterations} iterations{why} "
-          f"(kept in monotone/); starting again from the baseline with the adaptive barrier")
-    problem.adaptive_barrier_after(failed, "monotone")
-    load_warm_start(problem, baseline_sol)
-    return _solve_stage(problem, folder.stage, args, f"{what}, adaptive barrier", progress)
+    codes = []
+
+    def solve(adaptive):
+        code, sol = _solve_stage(problem, folder.stage, args, f"{what}, adaptive barrier" if adaptive else what,
+                                 progress)
+        codes.append(code)
+        return sol
+
+    def keep_failed(failed):
+        kept = folder.stage / "monotone"
+        kept.mkdir()
+        for f in list(folder.stage.iterdir()):
+            if f.name not in ("analysis", "monotone", "INCOMPLETE.txt"):
+                f.rename(kept / f.name)
+        why = f" ({failed.stopped_because})" if failed.stopped_because else ""
+        print(f"mdo: the monotone barrier ended {failed.status} after {failed.iterations} iterations{why} "
+              f"(kept in monotone/); starting again from the baseline with the adaptive barrier")
+
+    sol = optimize_from_baseline(problem, lambda: load_warm_start(problem, baseline_sol), solve,
+                                 on_fallback=keep_failed, iteration_limit_is_final=args.max_iter is not None)
+    return codes[-1], sol
 
 
 def _relaxed_start(args, options, analysis_problem, folder, progress):

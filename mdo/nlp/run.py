@@ -38,6 +38,7 @@ from .options import check_options
 from .problem import INTERRUPT_STATUS, Problem, Solution, WarmStartError, write_atomic
 
 __all__ = ["RunError", "ResultWriteError", "RunFolder", "load_problem_file", "default_out_dir",
+           "optimize_from_baseline",
            "run_problem", "solve_into", "RESULT_FILES"]
 
 RESULT_FILES = ("summary.json", "solution.json", "ipopt.log")
@@ -341,6 +342,34 @@ def solve_into(problem: Problem, folder, *, max_iter: int | None = None, verbose
     except Exception as exc:
         print(f"warning: report.html failed: {type(exc).__name__}: {exc}", file=sys.stderr)
     return solution
+
+
+def optimize_from_baseline(problem: Problem, start, solve, *, on_fallback=None,
+                           iteration_limit_is_final: bool = False) -> Solution:
+    """The second stage of DESIGN rule 7's continuation, with its fallback.
+
+    ``start()`` puts the starting point into ``problem`` (the converged baseline's mission,
+    plus any initial values of the caller); ``solve(adaptive) -> Solution`` solves it.
+    The first attempt uses the monotone barrier of ``Problem.start_from_baseline`` (unless
+    the problem chose its own barrier).  If it ends without an optimum -- not
+    interrupted, and not at an iteration limit the caller set when
+    ``iteration_limit_is_final`` -- ``on_fallback(failed)`` runs (``mdo run`` moves the
+    attempt's files aside), and the second attempt starts again from ``start()`` with
+    IPOPT's adaptive barrier (``Problem.adaptive_barrier_after``; the new solution's
+    ``barrier["fallback_from"]`` records the failed attempt).  ``mdo run`` and the
+    robustness study share this one policy."""
+    start()
+    monotone = problem.start_from_baseline()
+    sol = solve(False)
+    retry = (monotone and not sol.success and sol.status not in INTERRUPT_STATUS
+             and not (iteration_limit_is_final and sol.status == "Maximum_Iterations_Exceeded"))
+    if not retry:
+        return sol
+    if on_fallback is not None:
+        on_fallback(sol)
+    problem.adaptive_barrier_after(sol, "monotone")
+    start()
+    return solve(True)
 
 
 def load_warm_start(problem: Problem, source, *, partial: bool = False):

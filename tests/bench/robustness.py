@@ -27,7 +27,7 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT))
 
-from mdo.nlp.run import _import_file  # noqa: E402
+from mdo.nlp.run import _import_file, optimize_from_baseline  # noqa: E402
 
 
 def _draw(probe, rng, spread, factor=None):
@@ -42,7 +42,7 @@ def _draw(probe, rng, spread, factor=None):
 
 def _optimize(module, warm, start=None):
     """Stage 2 as ``mdo run``: the monotone barrier from the baseline, the adaptive barrier
-    if that does not converge (mdo/cli.py ``_adaptive_retry``)."""
+    if that does not converge (``mdo.nlp.run.optimize_from_baseline``, shared with the CLI)."""
     op = module.build(analysis=False)
 
     def from_start():
@@ -50,14 +50,7 @@ def _optimize(module, warm, start=None):
         for k, val in (start or {}).items():
             op.set_initial(k, val)
 
-    from_start()
-    monotone = op.start_from_baseline()
-    s = op.solve(verbose=False)
-    if monotone and not s.success:
-        op.adaptive_barrier_after(s, "monotone")
-        from_start()
-        s = op.solve(verbose=False)
-    return s
+    return optimize_from_baseline(op, from_start, lambda adaptive: op.solve(verbose=False))
 
 
 def one_start(module, rng, spread, from_baseline=None, factor=None):
