@@ -1,8 +1,10 @@
 """Biot–Savart kernels of the vortex lattice, as small SX ``casadi.Function``s.
 
 Each kernel returns the velocity induced at a point ``P`` by one straight vortex
-filament of unit circulation (m/s per m^2/s, i.e. 1/m).  They are mapped over
-(control point, filament) pairs by :mod:`mdo.wing.vlm` and called from MX.
+filament of unit circulation (m/s per m^2/s, i.e. 1/m).  The ``*_column`` functions
+map them over all points at once (one column of the lattice's influence, velocity or
+Trefftz matrices per filament), with the 2-D Trefftz-plane kernels (a point vortex;
+the mean of ln r over a segment); :mod:`mdo.wing.vlm` calls them from MX.
 
 Finite segment A -> B (paper Eq. 2, Katz & Plotkin 2001 Eq. 10.115)::
 
@@ -31,9 +33,11 @@ import math
 
 import casadi as ca
 
-__all__ = ["segment_velocity", "semi_infinite_velocity", "INV4PI"]
+__all__ = ["segment_velocity", "semi_infinite_velocity", "INV4PI", "TWO_PI_INV", "segment_column", "semi_column",
+           "velocity_columns", "trefftz_column", "log_segment_column", "log_point_column"]
 
 INV4PI = 1.0 / (4.0 * math.pi)
+TWO_PI_INV = 1.0 / (2.0 * math.pi)
 _TINY2 = 1e-24  # m^2
 _TINY8 = 1e-48  # m^8: keeps a zero-length segment (pointed tip) at exactly zero velocity
 
@@ -85,3 +89,102 @@ def semi_infinite_velocity() -> ca.Function:
     k = INV4PI * (1.0 + _dot(u, r1) / n1) / den
     return ca.Function("semi_infinite_velocity", [P, A, u, core], [k * c],
                        ["P", "A", "u", "core"], ["v"])
+
+
+# --- the kernels mapped over many points (the columns of the lattice's matrices) -------------
+@functools.lru_cache(maxsize=None)
+def segment_column(n_cp: int) -> ca.Function:
+    """(P[3 x n], nrm[3 x n], A[3], B[3], core) -> w[n x 1]: n_i . v(P_i) of a unit segment A->B."""
+    P = ca.SX.sym("P", 3, n_cp)
+    N = ca.SX.sym("n", 3, n_cp)
+    A = ca.SX.sym("A", 3)
+    B = ca.SX.sym("B", 3)
+    core = ca.SX.sym("core")
+    f = segment_velocity()
+    v = f.map(n_cp)(P, ca.repmat(A, 1, n_cp), ca.repmat(B, 1, n_cp), core)
+    w = ca.sum1(v * N).T
+    return ca.Function("segment_column", [P, N, A, B, core], [w], ["P", "n", "A", "B", "core"], ["w"])
+
+
+@functools.lru_cache(maxsize=None)
+def semi_column(n_cp: int) -> ca.Function:
+    """(P, nrm, A[3], core) -> w[n x 1]: n_i . v(P_i) of a unit filament from A to infinity along +x."""
+    P = ca.SX.sym("P", 3, n_cp)
+    N = ca.SX.sym("n", 3, n_cp)
+    A = ca.SX.sym("A", 3)
+    core = ca.SX.sym("core")
+    f = semi_infinite_velocity()
+    u = ca.DM([1.0, 0.0, 0.0])
+    v = f.map(n_cp)(P, ca.repmat(A, 1, n_cp), ca.repmat(u, 1, n_cp), core)
+    w = ca.sum1(v * N).T
+    return ca.Function("semi_column", [P, N, A, core], [w], ["P", "n", "A", "core"], ["w"])
+
+
+@functools.lru_cache(maxsize=None)
+def velocity_columns(n_pts: int, semi: bool) -> ca.Function:
+    """(P[3 x n], A[3], B[3] or nothing, core) -> vx, vy, vz [n x 1]: velocity of a unit filament."""
+    P = ca.SX.sym("P", 3, n_pts)
+    A = ca.SX.sym("A", 3)
+    B = ca.SX.sym("B", 3)
+    core = ca.SX.sym("core")
+    if semi:
+        u = ca.DM([1.0, 0.0, 0.0])
+        v = semi_infinite_velocity().map(n_pts)(P, ca.repmat(A, 1, n_pts), ca.repmat(u, 1, n_pts), core)
+        ins, names = [P, A, core], ["P", "A", "core"]
+    else:
+        v = segment_velocity().map(n_pts)(P, ca.repmat(A, 1, n_pts), ca.repmat(B, 1, n_pts), core)
+        ins, names = [P, A, B, core], ["P", "A", "B", "core"]
+    return ca.Function("velocity_columns", ins, [v[0, :].T, v[1, :].T, v[2, :].T], names, ["vx", "vy", "vz"])
+
+
+@functools.lru_cache(maxsize=None)
+def trefftz_column(n_mid: int) -> ca.Function:
+    """(mid[2 x n], nds[2 x n], e[2], core) -> w[n x 1]: nds_s . v_2D(mid_s) of a unit 2-D vortex at e."""
+    M = ca.SX.sym("mid", 2, n_mid)
+    Nd = ca.SX.sym("nds", 2, n_mid)
+    e = ca.SX.sym("e", 2)
+    core = ca.SX.sym("core")
+    dy = M[0, :] - e[0]
+    dz = M[1, :] - e[1]
+    r2 = dy * dy + dz * dz
+    k = TWO_PI_INV / ca.sqrt(r2 * r2 + core**4)      # 1/(2 pi r^2), with the smooth core
+    vy = -k * dz
+    vz = k * dy
+    w = (vy * Nd[0, :] + vz * Nd[1, :]).T
+    return ca.Function("trefftz_column", [M, Nd, e, core], [w], ["mid", "nds", "e", "core"], ["w"])
+
+
+@functools.lru_cache(maxsize=None)
+def log_segment_column(n_pts: int) -> ca.Function:
+    """(pts[2 x n], a[2], b[2]) -> w[n x 1]: mean of ln|p - r'| over the segment a-b, for each point p.
+
+    Closed form (2-D): with x along the segment from the foot of p and v the
+    distance to its line, integral ln sqrt(x^2 + v^2) dx = x ln sqrt(x^2+v^2) - x + v atan(x/v);
+    v carries a 1e-9 m floor (smooth; the points never lie on the segment).
+    """
+    Pt = ca.SX.sym("pts", 2, n_pts)
+    a = ca.SX.sym("a", 2)
+    b = ca.SX.sym("b", 2)
+    d = b - a
+    L = ca.sqrt(ca.sumsqr(d))
+    t = d / L
+    rx = Pt[0, :] - a[0]
+    ry = Pt[1, :] - a[1]
+    u = rx * t[0] + ry * t[1]
+    v = rx * t[1] - ry * t[0]
+    av = ca.sqrt(v * v + 1e-18)
+
+    def F(x):
+        return 0.5 * x * ca.log(x * x + av * av) - x + av * ca.atan(x / av)
+
+    w = ((F(L - u) - F(-u)) / L).T
+    return ca.Function("log_segment_column", [Pt, a, b], [w], ["pts", "a", "b"], ["w"])
+
+
+@functools.lru_cache(maxsize=None)
+def log_point_column(n_pts: int) -> ca.Function:
+    """(pts[2 x n], q[2]) -> ln|p - q| for each point (far-field pairs of the Trefftz energy)."""
+    Pt = ca.SX.sym("pts", 2, n_pts)
+    q = ca.SX.sym("q", 2)
+    d2 = (Pt[0, :] - q[0]) ** 2 + (Pt[1, :] - q[1]) ** 2
+    return ca.Function("log_point_column", [Pt, q], [0.5 * ca.log(d2 + 1e-18).T], ["pts", "q"], ["w"])

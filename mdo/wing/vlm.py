@@ -42,7 +42,7 @@ the first surface, symbolic if the design is), ``r_ref`` the moment reference.
 """
 from __future__ import annotations
 
-import functools
+import collections
 import math
 
 import casadi as ca
@@ -51,112 +51,13 @@ import numpy as np
 from ..core.errors import InputError, check_range
 from ..core.smooth import is_symbolic
 from .geometry import Params, Surface, mean_aerodynamic_chord, planform_area
-from .kernels import INV4PI, semi_infinite_velocity, segment_velocity
+from .kernels import (INV4PI, log_point_column, log_segment_column, segment_column, semi_column,
+                      trefftz_column, velocity_columns)
 from .lattice import surface_half
 
 __all__ = ["VLM"]
 
 _MIRROR = np.diag([1.0, -1.0, 1.0])
-_TWO_PI_INV = 1.0 / (2.0 * math.pi)
-
-
-# --- SX kernels: normal influence of one filament on all control points ---------------------
-@functools.lru_cache(maxsize=None)
-def _segment_column(n_cp: int) -> ca.Function:
-    """(P[3 x n], nrm[3 x n], A[3], B[3], core) -> w[n x 1]: n_i . v(P_i) of a unit segment A->B."""
-    P = ca.SX.sym("P", 3, n_cp)
-    N = ca.SX.sym("n", 3, n_cp)
-    A = ca.SX.sym("A", 3)
-    B = ca.SX.sym("B", 3)
-    core = ca.SX.sym("core")
-    f = segment_velocity()
-    v = f.map(n_cp)(P, ca.repmat(A, 1, n_cp), ca.repmat(B, 1, n_cp), core)
-    w = ca.sum1(v * N).T
-    return ca.Function("segment_column", [P, N, A, B, core], [w], ["P", "n", "A", "B", "core"], ["w"])
-
-
-@functools.lru_cache(maxsize=None)
-def _semi_column(n_cp: int) -> ca.Function:
-    """(P, nrm, A[3], core) -> w[n x 1]: n_i . v(P_i) of a unit filament from A to infinity along +x."""
-    P = ca.SX.sym("P", 3, n_cp)
-    N = ca.SX.sym("n", 3, n_cp)
-    A = ca.SX.sym("A", 3)
-    core = ca.SX.sym("core")
-    f = semi_infinite_velocity()
-    u = ca.DM([1.0, 0.0, 0.0])
-    v = f.map(n_cp)(P, ca.repmat(A, 1, n_cp), ca.repmat(u, 1, n_cp), core)
-    w = ca.sum1(v * N).T
-    return ca.Function("semi_column", [P, N, A, core], [w], ["P", "n", "A", "core"], ["w"])
-
-
-@functools.lru_cache(maxsize=None)
-def _velocity_columns(n_pts: int, semi: bool) -> ca.Function:
-    """(P[3 x n], A[3], B[3] or nothing, core) -> vx, vy, vz [n x 1]: velocity of a unit filament."""
-    P = ca.SX.sym("P", 3, n_pts)
-    A = ca.SX.sym("A", 3)
-    B = ca.SX.sym("B", 3)
-    core = ca.SX.sym("core")
-    if semi:
-        u = ca.DM([1.0, 0.0, 0.0])
-        v = semi_infinite_velocity().map(n_pts)(P, ca.repmat(A, 1, n_pts), ca.repmat(u, 1, n_pts), core)
-        ins, names = [P, A, core], ["P", "A", "core"]
-    else:
-        v = segment_velocity().map(n_pts)(P, ca.repmat(A, 1, n_pts), ca.repmat(B, 1, n_pts), core)
-        ins, names = [P, A, B, core], ["P", "A", "B", "core"]
-    return ca.Function("velocity_columns", ins, [v[0, :].T, v[1, :].T, v[2, :].T], names, ["vx", "vy", "vz"])
-
-
-@functools.lru_cache(maxsize=None)
-def _trefftz_column(n_mid: int) -> ca.Function:
-    """(mid[2 x n], nds[2 x n], e[2], core) -> w[n x 1]: nds_s . v_2D(mid_s) of a unit 2-D vortex at e."""
-    M = ca.SX.sym("mid", 2, n_mid)
-    Nd = ca.SX.sym("nds", 2, n_mid)
-    e = ca.SX.sym("e", 2)
-    core = ca.SX.sym("core")
-    dy = M[0, :] - e[0]
-    dz = M[1, :] - e[1]
-    r2 = dy * dy + dz * dz
-    k = _TWO_PI_INV / ca.sqrt(r2 * r2 + core**4)      # 1/(2 pi r^2), with the smooth core
-    vy = -k * dz
-    vz = k * dy
-    w = (vy * Nd[0, :] + vz * Nd[1, :]).T
-    return ca.Function("trefftz_column", [M, Nd, e, core], [w], ["mid", "nds", "e", "core"], ["w"])
-
-
-@functools.lru_cache(maxsize=None)
-def _log_segment_column(n_pts: int) -> ca.Function:
-    """(pts[2 x n], a[2], b[2]) -> w[n x 1]: mean of ln|p - r'| over the segment a-b, for each point p.
-
-    Closed form (2-D): with x along the segment from the foot of p and v the
-    distance to its line, integral ln sqrt(x^2 + v^2) dx = x ln sqrt(x^2+v^2) - x + v atan(x/v);
-    v carries a 1e-9 m floor (smooth; the points never lie on the segment).
-    """
-    Pt = ca.SX.sym("pts", 2, n_pts)
-    a = ca.SX.sym("a", 2)
-    b = ca.SX.sym("b", 2)
-    d = b - a
-    L = ca.sqrt(ca.sumsqr(d))
-    t = d / L
-    rx = Pt[0, :] - a[0]
-    ry = Pt[1, :] - a[1]
-    u = rx * t[0] + ry * t[1]
-    v = rx * t[1] - ry * t[0]
-    av = ca.sqrt(v * v + 1e-18)
-
-    def F(x):
-        return 0.5 * x * ca.log(x * x + av * av) - x + av * ca.atan(x / av)
-
-    w = ((F(L - u) - F(-u)) / L).T
-    return ca.Function("log_segment_column", [Pt, a, b], [w], ["pts", "a", "b"], ["w"])
-
-
-@functools.lru_cache(maxsize=None)
-def _log_point_column(n_pts: int) -> ca.Function:
-    """(pts[2 x n], q[2]) -> ln|p - q| for each point (far-field pairs of the Trefftz energy)."""
-    Pt = ca.SX.sym("pts", 2, n_pts)
-    q = ca.SX.sym("q", 2)
-    d2 = (Pt[0, :] - q[0]) ** 2 + (Pt[1, :] - q[1]) ** 2
-    return ca.Function("log_point_column", [Pt, q], [0.5 * ca.log(d2 + 1e-18).T], ["pts", "q"], ["w"])
 
 
 def _hmean(a, b):
@@ -267,161 +168,165 @@ class VLM:
                 h["offset"] = halves[k - 1]["offset"]
 
     def _build_geometry_function(self, ref):
-        """One SX Function: design parameters -> every geometric array the VLM needs."""
-        fA, fB, fcore, sA, score = [], [], [], [], []
-        MF_rows, MF_cols, MF_vals = [], [], []
-        MS_rows, MS_cols, MS_vals = [], [], []
-        cp, nrm, nrm0, rb, lb, area = [], [], [], [], [], []
-        st_chord, st_width, st_nrm, st_mid, st_y = [], [], [], [], []
-        tz_edge, tz_core, tz_mid, tz_nds = [], [], [], []
-        TS_rows, TS_cols, TE_rows, TE_cols, TE_vals = [], [], [], [], []
-        strip_panels = []          # per unknown strip: list of unknown panel indices
-        strip_surface, strip_airfoil, panel_surface = [], [], []
-        nF = nS = 0
-        n_tz_edges = n_tz_strips = 0
+        """One SX Function: design parameters -> every geometric array the VLM needs.
+
+        Per half-surface, in order: its vortex filaments (:meth:`_add_filaments`), the
+        horseshoes that combine them (:meth:`_add_horseshoes`), its Trefftz-plane traces
+        (:meth:`_add_trefftz_traces`) and, for the halves whose circulation is unknown,
+        control points, normals and strips (:meth:`_add_unknown_panels`); then the
+        incidence matrices and the Function (:meth:`_assemble_geometry`)."""
+        acc = collections.defaultdict(list)
+        acc["counts"] = {"finite": 0, "semi": 0, "tz_edges": 0, "tz_strips": 0}
         self.surface_slices = {}
         for h in self.halves:
-            E, S, nc = h["E"], h["S"], h["nc"]
             s = self.surfaces[h["surface"]]
-            nodes = h["nodes"]
-            img = h["image"]
-            # strip widths and panel chords at edges (for the vortex cores)
-            te = nodes[nc]
-            qc = nodes[0]
+            S = h["S"]
+            qc = h["nodes"][0]
             width = [ca.norm_2(qc[1:, si + 1] - qc[1:, si]) for si in range(S)]
-            pchord_e = [h["edge_chord"][e] / nc for e in range(E)]
-            # finite filaments: bound segments, then chordwise legs
-            bound_idx = {}
-            for si in range(S):
-                for r in range(nc):
-                    a, b = (nodes[r][:, si + 1], nodes[r][:, si]) if img else (nodes[r][:, si], nodes[r][:, si + 1])
-                    fA.append(a)
-                    fB.append(b)
-                    fcore.append(s.core * _hmean(width[si], 0.5 * (pchord_e[si] + pchord_e[si + 1])))
-                    bound_idx[(si, r)] = nF
-                    nF += 1
-            leg_idx = {}
-            for e in range(E):
-                w_e = width[min(e, S - 1)] if e in (0, E - 1) else 0.5 * (width[e - 1] + width[e])
-                for r in range(nc):
-                    fA.append(nodes[r][:, e])
-                    fB.append(nodes[r + 1][:, e])
-                    fcore.append(s.core * _hmean(w_e, pchord_e[e]))
-                    leg_idx[(e, r)] = nF
-                    nF += 1
-            semi_idx = {}
-            for e in range(E):
-                w_e = width[min(e, S - 1)] if e in (0, E - 1) else 0.5 * (width[e - 1] + width[e])
-                sA.append(te[:, e])
-                score.append(s.core * _hmean(w_e, pchord_e[e]))
-                semi_idx[e] = nS
-                nS += 1
-            # horseshoe incidence: column of the unknown it belongs to
-            off = h["offset"]
-            for si in range(S):
-                left, right = (si + 1, si) if img else (si, si + 1)
-                for r in range(nc):
-                    j = off + si * nc + r
-                    MF_rows.append(j); MF_cols.append(bound_idx[(si, r)]); MF_vals.append(1.0)
-                    for k in range(r, nc):
-                        MF_rows += [j, j]
-                        MF_cols += [leg_idx[(left, k)], leg_idx[(right, k)]]
-                        MF_vals += [-1.0, 1.0]
-                    MS_rows += [j, j]
-                    MS_cols += [semi_idx[left], semi_idx[right]]
-                    MS_vals += [-1.0, 1.0]
-            # Trefftz plane: every half, trailing-edge traces in (y, z)
-            h["tz_strip0"] = n_tz_strips
-            h["te_yz"] = [te[1:, e] for e in range(E)]
-            e0 = n_tz_edges
-            for e in range(E):
-                tz_edge.append(te[1:, e])
-                w_e = width[min(e, S - 1)] if e in (0, E - 1) else 0.5 * (width[e - 1] + width[e])
-                tz_core.append(s.core * w_e)
-            for si in range(S):
-                left, right = (si + 1, si) if img else (si, si + 1)
-                L, Rr = te[1:, left], te[1:, right]
-                tz_mid.append(0.5 * (L + Rr))
-                tz_nds.append(ca.vertcat(-(Rr[1] - L[1]), Rr[0] - L[0]))   # x_hat x (R - L)
-                srow = n_tz_strips + si
-                for r in range(nc):
-                    TS_rows.append(srow); TS_cols.append(off + si * nc + r)
-                # edge strength: +Gamma at the edge its right leg leaves, -Gamma at its left leg
-                TE_rows += [e0 + right, e0 + left]
-                TE_cols += [srow, srow]
-                TE_vals += [1.0, -1.0]
-            n_tz_edges += E
-            n_tz_strips += S
-            if not h["unknown"]:
-                continue
-            # unknown panels: control points, normals, bound segments, strips
-            first_strip = len(st_chord)
-            for si in range(S):
-                left, right = (si + 1, si) if img else (si, si + 1)
-                cols = []
-                for r in range(nc):
-                    j = off + si * nc + r
-                    a, b = nodes[r][:, left], nodes[r][:, right]
-                    lvec = b - a
-                    t = h["tangent"][:, si * nc + r]
-                    n_ = ca.cross(t, lvec)
-                    nrm.append(n_ / ca.norm_2(n_))
-                    n0 = ca.cross(h["tangent0"][:, si * nc + r], lvec)
-                    nrm0.append(n0 / ca.norm_2(n0))
-                    cp.append(h["cp"][:, si * nc + r])
-                    rb.append(0.5 * (a + b))
-                    lb.append(lvec)
-                    c_mid = 0.5 * (h["edge_chord"][left] + h["edge_chord"][right])
-                    area.append(c_mid * width[si] / nc)
-                    cols.append(j)
-                    panel_surface.append(h["surface"])
-                strip_panels.append(cols)
-                a, b = qc[:, left], qc[:, right]
-                dyz = b[1:] - a[1:]
-                st_chord.append(0.5 * (h["edge_chord"][left] + h["edge_chord"][right]))
-                st_width.append(width[si])
-                st_nrm.append(ca.vertcat(0, -dyz[1], dyz[0]) / ca.norm_2(dyz))
-                st_mid.append(0.5 * (a + b))
-                st_y.append(ca.vertcat(a[1], b[1]))
-                strip_surface.append(h["surface"])
-                strip_airfoil.append(h["strip_airfoil"][si])
-            nm = s.name + (" (left)" if img else "")
-            self.surface_slices[nm] = (first_strip, len(st_chord))
+            # the width an edge's filaments belong to (for their vortex cores)
+            edge_width = [width[min(e, S - 1)] if e in (0, h["E"] - 1) else 0.5 * (width[e - 1] + width[e])
+                          for e in range(h["E"])]
+            bound_idx, leg_idx, semi_idx = self._add_filaments(h, s, width, edge_width, acc)
+            self._add_horseshoes(h, bound_idx, leg_idx, semi_idx, acc)
+            self._add_trefftz_traces(h, s, edge_width, acc)
+            if h["unknown"]:
+                first_strip = len(acc["st_chord"])
+                self._add_unknown_panels(h, width, acc)
+                self.surface_slices[s.name + (" (left)" if h["image"] else "")] = (first_strip, len(acc["st_chord"]))
+        self._assemble_geometry(acc, ref)
 
+    @staticmethod
+    def _strip_edges(h, si):
+        """(left, right) edge indices of strip ``si`` (mirrored on an image half)."""
+        return (si + 1, si) if h["image"] else (si, si + 1)
+
+    def _add_filaments(self, h, s, width, edge_width, acc):
+        """Bound segments on the quarter-chord lines, chordwise legs along the camber line,
+        semi-infinite legs from the trailing edge; returns their indices."""
+        E, S, nc, nodes, cnt = h["E"], h["S"], h["nc"], h["nodes"], acc["counts"]
+        pchord_e = [h["edge_chord"][e] / nc for e in range(E)]
+        bound_idx, leg_idx, semi_idx = {}, {}, {}
+        for si in range(S):
+            for r in range(nc):
+                a, b = (nodes[r][:, si + 1], nodes[r][:, si]) if h["image"] else (nodes[r][:, si], nodes[r][:, si + 1])
+                acc["fA"].append(a)
+                acc["fB"].append(b)
+                acc["fcore"].append(s.core * _hmean(width[si], 0.5 * (pchord_e[si] + pchord_e[si + 1])))
+                bound_idx[(si, r)] = cnt["finite"]
+                cnt["finite"] += 1
+        for e in range(E):
+            for r in range(nc):
+                acc["fA"].append(nodes[r][:, e])
+                acc["fB"].append(nodes[r + 1][:, e])
+                acc["fcore"].append(s.core * _hmean(edge_width[e], pchord_e[e]))
+                leg_idx[(e, r)] = cnt["finite"]
+                cnt["finite"] += 1
+        for e in range(E):
+            acc["sA"].append(nodes[nc][:, e])
+            acc["score"].append(s.core * _hmean(edge_width[e], pchord_e[e]))
+            semi_idx[e] = cnt["semi"]
+            cnt["semi"] += 1
+        return bound_idx, leg_idx, semi_idx
+
+    def _add_horseshoes(self, h, bound_idx, leg_idx, semi_idx, acc):
+        """Each panel's horseshoe: its bound segment, the legs from it to the trailing edge
+        on both sides, and the two semi-infinite legs (rows of MF and MS)."""
+        nc, off = h["nc"], h["offset"]
+        for si in range(h["S"]):
+            left, right = self._strip_edges(h, si)
+            for r in range(nc):
+                j = off + si * nc + r
+                acc["MF"].append((j, bound_idx[(si, r)], 1.0))
+                for k in range(r, nc):
+                    acc["MF"] += [(j, leg_idx[(left, k)], -1.0), (j, leg_idx[(right, k)], 1.0)]
+                acc["MS"] += [(j, semi_idx[left], -1.0), (j, semi_idx[right], 1.0)]
+
+    def _add_trefftz_traces(self, h, s, edge_width, acc):
+        """The half's trailing-edge traces in the Trefftz plane (y, z): edges, strip
+        midpoints and normals, and which panels and edges each strip's circulation sums."""
+        E, S, nc, off, cnt = h["E"], h["S"], h["nc"], h["offset"], acc["counts"]
+        te = h["nodes"][nc]
+        h["tz_strip0"] = cnt["tz_strips"]
+        h["te_yz"] = [te[1:, e] for e in range(E)]
+        e0 = cnt["tz_edges"]
+        for e in range(E):
+            acc["tz_edge"].append(te[1:, e])
+            acc["tz_core"].append(s.core * edge_width[e])
+        for si in range(S):
+            left, right = self._strip_edges(h, si)
+            L, Rr = te[1:, left], te[1:, right]
+            acc["tz_mid"].append(0.5 * (L + Rr))
+            acc["tz_nds"].append(ca.vertcat(-(Rr[1] - L[1]), Rr[0] - L[0]))   # x_hat x (R - L)
+            srow = cnt["tz_strips"] + si
+            acc["TS"] += [(srow, off + si * nc + r) for r in range(nc)]
+            # edge strength: +Gamma at the edge its right leg leaves, -Gamma at its left leg
+            acc["TE"] += [(e0 + right, srow, 1.0), (e0 + left, srow, -1.0)]
+        cnt["tz_edges"] += E
+        cnt["tz_strips"] += S
+
+    def _add_unknown_panels(self, h, width, acc):
+        """Control points, normals (cambered and flat), bound-segment midpoints and vectors,
+        panel areas, and the strips (chord, width, normal, midpoint, span ends, section)."""
+        nc, off, nodes = h["nc"], h["offset"], h["nodes"]
+        qc = nodes[0]
+        for si in range(h["S"]):
+            left, right = self._strip_edges(h, si)
+            cols = []
+            for r in range(nc):
+                j = off + si * nc + r
+                a, b = nodes[r][:, left], nodes[r][:, right]
+                lvec = b - a
+                n_ = ca.cross(h["tangent"][:, si * nc + r], lvec)
+                acc["nrm"].append(n_ / ca.norm_2(n_))
+                n0 = ca.cross(h["tangent0"][:, si * nc + r], lvec)
+                acc["nrm0"].append(n0 / ca.norm_2(n0))
+                acc["cp"].append(h["cp"][:, si * nc + r])
+                acc["rb"].append(0.5 * (a + b))
+                acc["lb"].append(lvec)
+                acc["area"].append(0.5 * (h["edge_chord"][left] + h["edge_chord"][right]) * width[si] / nc)
+                cols.append(j)
+                acc["panel_surface"].append(h["surface"])
+            acc["strip_panels"].append(cols)
+            a, b = qc[:, left], qc[:, right]
+            dyz = b[1:] - a[1:]
+            acc["st_chord"].append(0.5 * (h["edge_chord"][left] + h["edge_chord"][right]))
+            acc["st_width"].append(width[si])
+            acc["st_nrm"].append(ca.vertcat(0, -dyz[1], dyz[0]) / ca.norm_2(dyz))
+            acc["st_mid"].append(0.5 * (a + b))
+            acc["st_y"].append(ca.vertcat(a[1], b[1]))
+            acc["strip_surface"].append(h["surface"])
+            acc["strip_airfoil"].append(h["strip_airfoil"][si])
+
+    def _assemble_geometry(self, acc, ref):
+        """The incidence matrices (numbers) and the geometry Function (symbolic in the design)."""
+        def triplet(entries, n_rows, n_cols):
+            rows, cols, vals = zip(*entries) if entries else ((), (), ())
+            return ca.DM.triplet(list(rows), list(cols), ca.DM(list(vals)), n_rows, n_cols)
+
+        cnt = acc["counts"]
         tzc_a, tzc_b, TC_rows, TC_cols, TC_vals = self._trefftz_chains()
         N = self.n_panels
-        self.n_finite, self.n_semi = nF, nS
-        self.MF = ca.DM.triplet(MF_rows, MF_cols, ca.DM(MF_vals), N, nF)
-        self.MS = ca.DM.triplet(MS_rows, MS_cols, ca.DM(MS_vals), N, nS)
-        n_strips = len(st_chord)
-        self.n_strips = n_strips
-        self.strip_panels = strip_panels
-        self.strip_surface = strip_surface
-        self.strip_airfoil = strip_airfoil
-        self.panel_surface = panel_surface
-        sp_r = [i for i, cols in enumerate(strip_panels) for _ in cols]
-        sp_c = [j for cols in strip_panels for j in cols]
-        self.strip_sum = ca.DM.triplet(sp_r, sp_c, ca.DM.ones(len(sp_c)), n_strips, N)
-        self.TS = ca.DM.triplet(TS_rows, TS_cols, ca.DM.ones(len(TS_rows)), n_tz_strips, N)
-        TE = ca.DM.triplet(TE_rows, TE_cols, ca.DM(TE_vals), n_tz_edges, n_tz_strips)
-        self.TE = TE
-        self.n_tz_edges, self.n_tz_strips = n_tz_edges, n_tz_strips
+        self.n_finite, self.n_semi = cnt["finite"], cnt["semi"]
+        self.MF = triplet(acc["MF"], N, cnt["finite"])
+        self.MS = triplet(acc["MS"], N, cnt["semi"])
+        self.n_strips = n_strips = len(acc["st_chord"])
+        self.strip_panels = acc["strip_panels"]
+        self.strip_surface = acc["strip_surface"]
+        self.strip_airfoil = acc["strip_airfoil"]
+        self.panel_surface = acc["panel_surface"]
+        self.strip_sum = triplet([(i, j, 1.0) for i, cols in enumerate(self.strip_panels) for j in cols], n_strips, N)
+        self.TS = triplet([(i, j, 1.0) for i, j in acc["TS"]], cnt["tz_strips"], N)
+        self.TE = triplet(acc["TE"], cnt["tz_edges"], cnt["tz_strips"])
+        self.n_tz_edges, self.n_tz_strips = cnt["tz_edges"], cnt["tz_strips"]
         self.n_tz_segments = len(tzc_a)
-        self.TC = ca.DM.triplet(TC_rows, TC_cols, ca.DM(TC_vals), len(tzc_a), n_tz_strips)
-
-        outs = {
-            "cp": ca.horzcat(*cp), "normal": ca.horzcat(*nrm), "normal_lattice": ca.horzcat(*nrm0),
-            "fA": ca.horzcat(*fA), "fB": ca.horzcat(*fB), "fcore": ca.horzcat(*fcore),
-            "sA": ca.horzcat(*sA), "score": ca.horzcat(*score),
-            "rb": ca.horzcat(*rb), "lb": ca.horzcat(*lb), "area": ca.horzcat(*area),
-            "strip_chord": ca.horzcat(*st_chord), "strip_width": ca.horzcat(*st_width),
-            "strip_normal": ca.horzcat(*st_nrm), "strip_mid": ca.horzcat(*st_mid),
-            "strip_y": ca.horzcat(*st_y),
-            "tz_edge": ca.horzcat(*tz_edge), "tz_core": ca.horzcat(*tz_core),
-            "tz_mid": ca.horzcat(*tz_mid), "tz_nds": ca.horzcat(*tz_nds),
-            "tz_seg_a": ca.horzcat(*tzc_a), "tz_seg_b": ca.horzcat(*tzc_b),
-            "S_ref": ref[0], "c_ref": ref[1], "b_ref": ref[2], "r_ref": ca.vertcat(*ref[3:]),
-        }
+        self.TC = ca.DM.triplet(TC_rows, TC_cols, ca.DM(TC_vals), len(tzc_a), cnt["tz_strips"])
+        cat = {"cp": "cp", "normal": "nrm", "normal_lattice": "nrm0", "fA": "fA", "fB": "fB", "fcore": "fcore",
+               "sA": "sA", "score": "score", "rb": "rb", "lb": "lb", "area": "area", "strip_chord": "st_chord",
+               "strip_width": "st_width", "strip_normal": "st_nrm", "strip_mid": "st_mid", "strip_y": "st_y",
+               "tz_edge": "tz_edge", "tz_core": "tz_core", "tz_mid": "tz_mid", "tz_nds": "tz_nds"}
+        outs = {k: ca.horzcat(*acc[key]) for k, key in cat.items()}
+        outs.update({"tz_seg_a": ca.horzcat(*tzc_a), "tz_seg_b": ca.horzcat(*tzc_b),
+                     "S_ref": ref[0], "c_ref": ref[1], "b_ref": ref[2], "r_ref": ca.vertcat(*ref[3:])})
         outs = {k: (v if isinstance(v, ca.SX) else ca.SX(v)) for k, v in outs.items()}
         self.geometry_function = ca.Function("vlm_geometry", [self.params.sx], list(outs.values()),
                                              ["p"], list(outs.keys()))
@@ -436,8 +341,8 @@ class VLM:
         # the twisted/cambered ones only in the right-hand side (linearized boundary condition)
         Nn = ca.mtimes(stretch, g["normal_lattice"] if self.flat_lattice else g["normal"])
         N = self.n_panels
-        seg = _segment_column(N).map("seg_map", "serial", self.n_finite, [0, 1], [])
-        semi = _semi_column(N).map("semi_map", "serial", self.n_semi, [0, 1], [])
+        seg = segment_column(N).map("seg_map", "serial", self.n_finite, [0, 1], [])
+        semi = semi_column(N).map("semi_map", "serial", self.n_semi, [0, 1], [])
         WF = seg(P, Nn, ca.mtimes(stretch, g["fA"]), ca.mtimes(stretch, g["fB"]), g["fcore"])
         WS = semi(P, Nn, ca.mtimes(stretch, g["sA"]), g["score"])
         A = ca.mtimes(WF, self.MF.T) + ca.mtimes(WS, self.MS.T)
@@ -509,8 +414,8 @@ class VLM:
         stretch = ca.DM(np.diag([1.0 / b, 1.0, 1.0]))
         P = ca.mtimes(stretch, g["rb"])
         N = self.n_panels
-        seg = _velocity_columns(N, False).map("segv_map", "serial", self.n_finite, [0], [])
-        semi = _velocity_columns(N, True).map("semiv_map", "serial", self.n_semi, [0], [])
+        seg = velocity_columns(N, False).map("segv_map", "serial", self.n_finite, [0], [])
+        semi = velocity_columns(N, True).map("semiv_map", "serial", self.n_semi, [0], [])
         out = []
         WF = seg(P, ca.mtimes(stretch, g["fA"]), ca.mtimes(stretch, g["fB"]), g["fcore"])
         WS = semi(P, ca.mtimes(stretch, g["sA"]), g["score"])
@@ -541,14 +446,14 @@ class VLM:
     def _trefftz_matrix(self, scheme):
         g = self._geo
         if scheme == "midpoint":
-            col = _trefftz_column(self.n_tz_strips).map("tz_map", "serial", self.n_tz_edges, [0, 1], [])
+            col = trefftz_column(self.n_tz_strips).map("tz_map", "serial", self.n_tz_edges, [0, 1], [])
             K = col(g["tz_mid"], g["tz_nds"], g["tz_edge"], g["tz_core"])   # strips x edges
             return -0.5 * ca.mtimes(K, self.TE)
         M = self.n_tz_segments
         a, b = g["tz_seg_a"], g["tz_seg_b"]
         mid = 0.5 * (a + b)
         # far pairs: ln|mid_k - mid_m| (error ~ (L_k^2 + L_m^2)/(24 d^2), d > 3 segment lengths)
-        J = _log_point_column(M).map("tz_far_map", "serial", M, [0], [])(mid, mid)
+        J = log_point_column(M).map("tz_far_map", "serial", M, [0], [])(mid, mid)
         # near pairs (same chain, |k - m| <= band, k != m): 4-point Gauss x closed-form segment mean
         pairs = self._tz_near_pairs
         if pairs:
@@ -560,8 +465,8 @@ class VLM:
             ak, bk = a[:, kk], b[:, kk]
             am, bm = a[:, mm], b[:, mm]
             near = 0
-            fcol = _log_segment_column(1).map(nb, "serial")
-            pfar = _log_point_column(1).map(nb, "serial")
+            fcol = log_segment_column(1).map(nb, "serial")
+            pfar = log_point_column(1).map(nb, "serial")
             for x, wq in zip(xg, wg):
                 near = near + float(wq) * fcol(ak + float(x) * (bk - ak), am, bm)
             far = pfar(0.5 * (ak + bk), 0.5 * (am + bm))
