@@ -1,7 +1,7 @@
 """How the optimization's barrier start from a converged baseline sets its iteration count
 (issue 20: fewer iterations).  Not collected by pytest.
 
-    python tests/bench/barrier_start.py [ga2p ga8p] [--mu 1e-2 1e-3 1e-4]
+    python tests/bench/barrier_start.py [ga2p ga8p] [--mu 1e-2 1e-3 1e-4] [-o KEY=VALUE ...]
 
 For each problem and each monotone ``mu_init``, builds the optimization, warm-starts it
 from the committed baseline analysis (``results/<p>/analysis/solution.json``) as
@@ -17,6 +17,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT))
 
+from mdo.cli import _parse_option  # noqa: E402
 from mdo.nlp import load_problem_file  # noqa: E402
 
 
@@ -24,12 +25,15 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("problems", nargs="*", default=["ga2p", "ga8p"])
     ap.add_argument("--mu", type=float, nargs="+", default=[1e-2, 1e-3, 1e-4])
+    ap.add_argument("-o", dest="options", action="append", default=[],
+                    help="a problem option, as mdo run's -o (e.g. trim=false for the X-57's committed runs)")
     args = ap.parse_args()
+    options = dict(_parse_option(o) for o in args.options)
     print("| problem | mu_init | status | iterations | solve wall (s) | energy (kWh) |")
     print("|---|---:|---|---:|---:|---:|")
     for prob in args.problems:
         for mu in args.mu:
-            op = load_problem_file(ROOT / "problems" / f"{prob}.py")
+            op = load_problem_file(ROOT / "problems" / f"{prob}.py", options=options)
             op.warm_start(ROOT / "results" / prob / "analysis" / "solution.json")
             op.start_from_baseline()
             op.ipopt_options["mu_init"] = mu
