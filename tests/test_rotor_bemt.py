@@ -227,3 +227,33 @@ def test_tilt_wing_transition_incidence_converges_in_azimuth(wma_deg):
     axial = analyze(rotor, omega_radps=140.0, v_axial_mps=vx)
     # in-plane flow raises the mean dynamic pressure: more thrust and power than the axial part alone
     assert T[32][0] > axial["thrust_N"][0] and T[32][2] > axial["power_W"][0]
+
+
+def test_hub_of_a_steeply_pitched_blade_has_its_root_past_pi_over_2():
+    """The TTW's cruise (2026-12-05): a hover-twisted blade (hub 44 deg) at a 45-50 deg
+    collective, 630 rpm and 78 m/s.  The hub station's root lies just past pi/2; the NLP's
+    bounds must contain it (with pi/2 as the bound the hub station held the cruise
+    collective) and the analysis must find the same root, and the loads must be regular
+    at exactly pi/2 (no 1/cos(phi))."""
+    from mdo.rotor import PHI_MAX_RAD
+    from mdo.rotor.analysis import solve_phi
+    from mdo.rotor.bemt import station_physics
+    sec = AnalyticSection(alpha0_rad=math.radians(-4))
+    n, R, h = 16, 1.16, 0.12
+    r, _ = _stations(n, R, h)
+    twist = np.radians(44.0) * r[0] / r
+    for pitch_deg in (45.0, 50.0):
+        inp = _inputs(n, 0.1, twist, R=R, h=h, omega=65.7, vx=78.0, pitch=math.radians(pitch_deg))
+        sol = solve_phi(sec, inp, n)
+        phi_hub = sol["phi_rad"][0, 0]
+        assert sol["found"].all() and np.abs(sol["residual"]).max() < 1e-10
+        assert 0.5 * math.pi < phi_hub < PHI_MAX_RAD, math.degrees(phi_hub)
+        assert np.all(sol["phi_rad"][1:, 0] < 0.5 * math.pi)      # the other stations as before
+        # the NLP reproduces it from the analysis' neighbourhood, inside its bounds
+        fn = bemt_function(sec, n, 1, outputs="full")
+        out = fn(**inp, phi_rad=sol["phi_rad"][:, 0])
+        assert np.all(np.isfinite(np.array(out["thrust_N"])))
+    ph = np.array([0.5 * math.pi - 1e-3, 0.5 * math.pi, 0.5 * math.pi + 1e-3])
+    st = station_physics(ph, r[0], 0.1, twist[0] + math.radians(45), 78.0, 65.7 * r[0], RHO, MU, A, 3, R, h * R, sec)
+    assert np.all(np.isfinite(st["W"])) and np.all(np.isfinite(st["v"]))
+    assert abs(st["W"][1] - 0.5 * (st["W"][0] + st["W"][2])) < 1e-3 * st["W"][1]   # smooth through pi/2

@@ -5,16 +5,18 @@ azimuth station x operating point) by a bracketed root finder written in CasADi
 SX, so that a whole J sweep is one mapped call:
 
 1. bracket: the residual is evaluated on ``n_grid`` points from ``phi = 1e-6``
-   to ``pi/2`` and the first sign change nearest ``phi = 0`` is taken (Ning 2014,
-   section 3; the momentum/propeller region).  For ``Vx >= 0`` and a blade that
-   lifts at small ``phi`` a sign change is guaranteed (bemt.py docstring);
+   to ``PHI_MAX_RAD = 3 pi/4`` (the NLP's domain, so analysis and optimization find
+   the same root) and the first sign change nearest ``phi = 0`` is taken (Ning 2014,
+   section 3; the momentum/propeller region, extended past pi/2 for the hub of a
+   steeply pitched blade in fast axial flow, bemt.py docstring).  For ``Vx >= 0`` and
+   a blade that lifts at small ``phi`` a sign change in (0, pi/2] is guaranteed;
 2. ``n_bisect`` bisection steps shrink the bracket;
 3. ``n_newton`` Newton steps, each kept inside the current bracket (a step that
    leaves it is replaced by bisection), polish the root to round-off.
 
-Elements without a sign change in (0, pi/2] (negative pitch at a station,
+Elements without a sign change in (0, 3 pi/4] (negative pitch at a station,
 reversed flow) are retried in Python on the other quadrants in Ning's order:
-(-pi/2, 0) searched from 0 downward, (pi/2, pi), (-pi, -pi/2).  An element with
+(-pi/2, 0) searched from 0 downward, (3 pi/4, pi), (-pi, -pi/2).  An element with
 no sign change anywhere (e.g. omega = 0 in still air) keeps the ``phi`` of the
 smallest |residual| on a fine grid and is reported as not converged: the
 analysis never raises for a hard operating point, it reports.
@@ -32,7 +34,7 @@ import numpy as np
 
 from ..core.atmosphere import check_altitude, density, dynamic_viscosity, speed_of_sound
 from ..core.errors import InputError
-from .bemt import FULL_OUTPUTS, INPUT_NAMES, _elements, _symbols, bemt_function, station_physics
+from .bemt import FULL_OUTPUTS, INPUT_NAMES, PHI_MAX_RAD, _elements, _symbols, bemt_function, station_physics
 from .geometry import RotorGeometry
 from .sections import section as make_section
 
@@ -62,7 +64,7 @@ def _element_residual(sec, tip_loss, hub_loss):
     return _CACHE[key][0]
 
 
-def solve_kernel(sec, *, n_grid: int = 16, n_bisect: int = 10, n_newton: int = 5,
+def solve_kernel(sec, *, n_grid: int = 24, n_bisect: int = 10, n_newton: int = 5,
                  tip_loss: bool = True, hub_loss: bool = True) -> ca.Function:
     """SX Function solving one element's residual on the interval (phi_a -> phi_b).
 
@@ -119,7 +121,7 @@ def solve_kernel(sec, *, n_grid: int = 16, n_bisect: int = 10, n_newton: int = 5
 def point_solver(sec, n_stations: int = 20, n_azimuth: int = 1, *, tip_loss=True, hub_loss=True,
                  **kernel_opts) -> ca.Function:
     """Function: one operating point's inputs (``INPUT_NAMES`` without phi) ->
-    ``phi_rad`` [n*m], ``residual`` [n*m], ``found`` [n*m], searching (0, pi/2].
+    ``phi_rad`` [n*m], ``residual`` [n*m], ``found`` [n*m], searching (0, PHI_MAX_RAD].
     An MX wrapper around the SX element kernel mapped over the n*m elements."""
     key = _cache_key(sec, "point", n_stations, n_azimuth, tip_loss, hub_loss,
                      tuple(sorted(kernel_opts.items())))
@@ -133,7 +135,7 @@ def point_solver(sec, n_stations: int = 20, n_azimuth: int = 1, *, tip_loss=True
     ones = ca.DM.ones(N, 1)
     args = [e["r"], e["chord"], e["theta"], x["v_axial_mps"] * ones, e["vy"], x["rho_kgpm3"] * ones,
             x["mu_Pas"] * ones, x["a_mps"] * ones, x["blades"] * ones, x["radius_m"] * ones,
-            x["radius_m"] * x["hub_fraction"] * ones, _EPS_PHI * ones, 0.5 * math.pi * ones]
+            x["radius_m"] * x["hub_fraction"] * ones, _EPS_PHI * ones, PHI_MAX_RAD * ones]
     out = kern.map(N)(*[ca.transpose(a) for a in args])
     names_in = [k for k in INPUT_NAMES if k != "phi_rad"]
     f = ca.Function("bemt_point_solver", [x[k] for k in names_in],
@@ -191,7 +193,8 @@ def solve_phi(sec, inputs: dict, n_stations: int = 20, n_azimuth: int = 1, *, ti
 
     ``inputs``: ``INPUT_NAMES`` without ``phi_rad``; scalars or arrays with K
     entries (chord/twist: n or (n, K)).  Returns ``phi_rad``, ``residual``
-    (n*m, K), ``found`` (bool), ``quadrant`` (1..4, 0 if none).
+    (n*m, K), ``found`` (bool), ``quadrant`` (1: (0, 3 pi/4], the NLP's domain; 2: (-pi/2, 0);
+    3: (3 pi/4, pi); 4: (-pi, -pi/2); 0 if none).
     """
     n, m = n_stations, n_azimuth
     arr, K = _broadcast_inputs(inputs, n)
@@ -205,7 +208,7 @@ def solve_phi(sec, inputs: dict, n_stations: int = 20, n_azimuth: int = 1, *, ti
         el = _element_arrays(arr, n, m)
         kern = solve_kernel(sec, tip_loss=tip_loss, hub_loss=hub_loss)
         half = 0.5 * math.pi
-        for q, (a, b) in ((2, (-_EPS_PHI, -half)), (3, (half, math.pi - _EPS_PHI)),
+        for q, (a, b) in ((2, (-_EPS_PHI, -half)), (3, (PHI_MAX_RAD, math.pi - _EPS_PHI)),
                           (4, (-half, -math.pi + _EPS_PHI))):
             idx = np.nonzero(~found)
             if idx[0].size == 0:

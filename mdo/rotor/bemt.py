@@ -47,14 +47,24 @@ with cl, cd at ``alpha = theta - pi/2``: positive, so a root lies in (0, pi/2], 
 the section still lifts with its chord turned past the axis, ``cl(theta - pi/2) >
 4 F Vy/(Vx sigma') + cd Vy/Vx``.  That happens at the hub of a steeply twisted blade
 at a large collective in fast axial flow (small Vy/Vx, small hub F): the TTW rotors'
-hub station (blade angle 58 deg) leaves the bracket at a collective near 30 deg.
-The |sin phi| factors carry Ning's sign conventions into the other quadrants (used only by the analysis fallback); on
-the NLP's bounds phi in [phi_min > 0, pi/2] they equal sin(phi) and the residual is
-smooth.
+hub station (blade angle 44 deg) at the cruise collective of 45 deg and 630 rpm
+(J = 3.2).  The root then lies just past pi/2 (swirl v > Vy, ``W cos(phi) < 0``; at
+the TTW's hub 92-101 deg for collectives 45-55 deg, alpha -3..+1 deg, a lightly loaded
+element) - the root the numeric analysis finds in its third quadrant.  The NLP's bounds
+are therefore ``phi in [phi_min, 3 pi/4]``: with the bracket's end at pi/2 instead,
+the hub station pinned there held the TTW's cruise collective (bound multipliers up to
+1.1 kWh per rad, 2026-12-05).  A scan of the TTW blade (400-2000 rpm, 0-100 m/s axial,
+collective -10..60 deg, every station) found no case with roots on both sides of pi/2,
+so widening the bounds adds no second root.  On (0, 3 pi/4] ``|sin phi| = sin phi >=
+0.7`` near the end and the residual is smooth; the loads are written without
+``1/cos(phi)`` (below) so that ``phi = pi/2`` is an ordinary point.
+The |sin phi| factors carry Ning's sign conventions into the other quadrants (used
+only by the analysis fallback).
 
 At the root the induced velocities and loads follow without dividing by ``Vx``:
 
-    v = Vy k'/(1 + k'),   W = (Vy - v)/cos(phi),   u = W sin(phi) - Vx
+    v = Vy k'/(1 + k') = Vy q ct/(cos(phi) + q ct),   W = (Vy - v)/cos(phi) = Vy/(cos(phi) + q ct),
+    u = W sin(phi) - Vx                                (q = sigma'/(4 F |sin phi|))
     N' = 1/2 rho W^2 c cn,  T' = 1/2 rho W^2 c ct   (per blade, per unit span)
     Gamma = 1/2 W c cl                                (bound circulation)
 
@@ -96,7 +106,7 @@ __all__ = [
 ]
 
 PHI_MIN_RAD = math.radians(0.1)   # NLP lower bound: keeps |sin phi| = sin phi (smooth)
-PHI_MAX_RAD = 0.5 * math.pi       # NLP upper bound: the bracket's end (R(pi/2) > 0)
+PHI_MAX_RAD = 0.75 * math.pi      # NLP upper bound: past pi/2 for the hub of a steeply pitched blade (docstring)
 
 INPUT_NAMES = (
     "radius_m", "hub_fraction", "blades", "chord_m", "twist_rad", "pitch_rad",
@@ -170,10 +180,12 @@ def station_physics(phi, r, chord, theta, vx, vy, rho, mu, a_sound, blades, r_ti
     if hub_loss:
         F = F * (2.0 / math.pi) * acos(lib.exp(-0.5 * blades * (r - r_hub) / (r_hub * asphi)))
     q = sigma / (4.0 * F * asphi)          # sigma'/(4 F |sin phi|)
-    kp = q * ct / cphi
     residual = (vy * (sphi - q * cn) - vx * (cphi + q * ct)) / w0
-    v = vy * kp / (1.0 + kp)
-    W = (vy - v) / cphi
+    # v = Vy k'/(1 + k') and W = (Vy - v)/cos(phi) with k' = q ct/cos(phi), written
+    # without 1/cos(phi) so that phi = pi/2 (the hub of a steeply pitched blade) is regular
+    den = cphi + q * ct
+    v = vy * q * ct / den
+    W = vy / den
     u = W * sphi - vx
     dyn = 0.5 * rho * W * W * chord
     return {
@@ -361,8 +373,9 @@ def phi_momentum_guess(r, chord, theta, vx, vy, blades, lift_slope=2 * math.pi, 
 def bemt_unknowns(n_stations: int, n_azimuth: int = 1, init=None, *, n_nodes: int | None = None) -> dict:
     """Spec of the BEMT unknowns for an NLP: name, shape, unit, bounds, scale, init.
 
-    Bounds [PHI_MIN_RAD, pi/2] bracket the root for climb, hover, mild descent and
-    windmilling (module docstring); the scale 0.3 rad is a typical inflow angle.
+    Bounds [PHI_MIN_RAD, 3 pi/4] hold the root for climb, hover, mild descent,
+    windmilling and the hub of a steeply pitched blade in fast axial flow (module
+    docstring); the scale 0.3 rad is a typical inflow angle.
     ``init`` (rad) may be a full array (e.g. from ``analysis.solve_phi``) or a number.
     """
     shape = (n_stations * n_azimuth,) if n_nodes is None else (n_stations * n_azimuth, n_nodes)
