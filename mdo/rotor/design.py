@@ -53,11 +53,13 @@ import numpy as np
 
 from ..core.atmosphere import check_altitude, density, dynamic_viscosity, speed_of_sound
 from ..core.errors import InputError
+from ..airfoil.clmax import fit_clmax
 from .geometry import RotorGeometry, station_layout
 from .sections import section as make_section, section_coefficients
 
 __all__ = ["adkins_liebeck_function", "adkins_liebeck", "adkins_liebeck_unrolled",
-           "adkins_liebeck_implicit", "add_adkins_liebeck", "DESIGN_INPUTS", "design_guess"]
+           "adkins_liebeck_implicit", "add_adkins_liebeck", "DESIGN_INPUTS", "design_guess",
+           "station_clmax", "design_cl_stall_rows"]
 
 DESIGN_INPUTS = ("target", "speed_mps", "radius_m", "omega_radps", "cl_design", "rho_kgpm3",
                  "mu_Pas", "a_mps", "hub_fraction", "blades")
@@ -187,20 +189,9 @@ def _check_design_inputs(p: dict, target: str):
         raise InputError("tip Mach", f"design helical tip Mach must be < 1, got {mtip:.3f}")
 
 
-def adkins_liebeck(*, blades: int, radius_m: float, speed_mps: float, airfoil="naca4412",
-                   cl_design: float = 0.7, thrust_N: float | None = None,
-                   power_W: float | None = None, omega_radps: float | None = None,
-                   rpm: float | None = None, tip_mach: float | None = None,
-                   hub_fraction: float = 0.12, altitude_m: float = 0.0, n_stations: int = 20,
-                   tol: float = 1e-12, max_iter: int = 60, name: str = "adkins_liebeck") -> dict:
-    """Numeric A-L design (analysis mode).  Give one of ``thrust_N``/``power_W`` and
-    one of ``omega_radps``/``rpm``/``tip_mach`` (rotational tip Mach at ``altitude_m``).
-
-    Returns a dict: ``geometry`` (a ``RotorGeometry`` defined at the BEMT stations
-    plus the tip, ready for ``analyze``), ``chord_m``, ``twist_rad``, ``phi_rad``,
-    ``r_m``, ``w_mps``, ``zeta`` (= w/V), ``thrust_N``, ``power_W``, ``eta``,
-    ``residual_max``, ``iterations``, ``omega_radps``, and the inputs.
-    """
+def _design_point(*, radius_m, speed_mps, cl_design, thrust_N, power_W, omega_radps, rpm, tip_mach,
+                  hub_fraction, altitude_m, blades) -> tuple[dict, str]:
+    """The design point's ``DESIGN_INPUTS`` (checked) and the target ("thrust"/"power")."""
     if (thrust_N is None) == (power_W is None):
         raise InputError("design", "give exactly one of design thrust or design power")
     target = "thrust" if thrust_N is not None else "power"
@@ -220,24 +211,30 @@ def adkins_liebeck(*, blades: int, radius_m: float, speed_mps: float, airfoil="n
         omega_radps = tip_mach * a_s / radius_m
     if not (isinstance(radius_m, (int, float)) and math.isfinite(radius_m) and radius_m > 0):
         raise InputError("radius", f"must be > 0 m, got {radius_m!r}")
-    sec = make_section(airfoil)
     p = {"target": float(thrust_N if target == "thrust" else power_W), "speed_mps": float(speed_mps),
          "radius_m": float(radius_m), "omega_radps": float(omega_radps), "cl_design": float(cl_design),
          "rho_kgpm3": float(density(altitude_m)), "mu_Pas": float(dynamic_viscosity(altitude_m)),
          "a_mps": a_s, "hub_fraction": float(hub_fraction), "blades": float(blades)}
     _check_design_inputs(p, target)
-    f = adkins_liebeck_function(sec, n_stations, target=target)
+    return p, target
+
+
+def _residual_and_jacobian(sec, n_stations: int, target: str) -> ca.Function:
+    """``(DESIGN_INPUTS, z) -> (residual, d residual/dz)`` of the A-L design, cached."""
     key = (id(sec), "al_jac", n_stations, target)
     if key not in _CACHE:
+        f = adkins_liebeck_function(sec, n_stations, target=target)
         z = ca.SX.sym("z", n_stations + 1)
         args = [ca.SX.sym(k) for k in DESIGN_INPUTS]
         res = f(*args, z[0], z[1:])[0]
         _CACHE[key] = (ca.Function("al_newton", args + [z], [res, ca.jacobian(res, z)]), sec)
-    fj = _CACHE[key][0]
-    w0, a0 = design_guess(sec, p, n_stations, target)
-    z = np.r_[w0, a0]
-    pargs = [p[k] for k in DESIGN_INPUTS]
+    return _CACHE[key][0]
 
+
+def _damped_newton(fj: ca.Function, pargs: list, z: np.ndarray, tol: float, max_iter: int):
+    """Newton on the (n+1) A-L residuals with a backtracking line search that keeps
+    ``w > 0``, the section angles within +-25 deg and the residual norm decreasing.
+    Returns ``(z, residual, iterations)``."""
     def resid(zz):
         r_, J_ = fj(*pargs, zz)
         return np.array(r_).ravel(), np.array(J_)
@@ -255,7 +252,6 @@ def adkins_liebeck(*, blades: int, radius_m: float, speed_mps: float, airfoil="n
             dz = np.linalg.solve(J, -r)
         except np.linalg.LinAlgError:
             dz = -np.linalg.lstsq(J, r, rcond=None)[0]
-        # keep w > 0 and the section angles within +-20 deg of the start
         step = 1.0
         for _ in range(30):
             zn = z + step * dz
@@ -267,6 +263,45 @@ def adkins_liebeck(*, blades: int, radius_m: float, speed_mps: float, airfoil="n
         else:
             break
         z, r, J = zn, rn, Jn
+    return z, r, it
+
+
+def _analysis_geometry(res: dict, xi: np.ndarray, radius_m: float, hub_fraction: float, blades: int,
+                       sec, name: str) -> RotorGeometry:
+    """The designed blade for ``analyze``: the design stations, the hub (the first
+    station's chord and angle) and the tip (chord and angle extrapolated linearly)."""
+    c, b = res["chord_m"], res["twist_rad"]
+    slope = (1 - xi[-1]) / (xi[-1] - xi[-2])
+    c_tip = max(c[-1] + (c[-1] - c[-2]) * slope, 1e-3 * radius_m)
+    b_tip = b[-1] + (b[-1] - b[-2]) * slope
+    return RotorGeometry(radius_m=float(radius_m), blades=int(blades), r_over_R=np.r_[hub_fraction, xi, 1.0],
+                         chord_over_R=np.r_[c[0], c, c_tip] / radius_m, beta_rad=np.r_[b[0], b, b_tip],
+                         hub_fraction=float(hub_fraction), airfoil=sec, name=name)
+
+
+def adkins_liebeck(*, blades: int, radius_m: float, speed_mps: float, airfoil="naca4412",
+                   cl_design: float = 0.7, thrust_N: float | None = None,
+                   power_W: float | None = None, omega_radps: float | None = None,
+                   rpm: float | None = None, tip_mach: float | None = None,
+                   hub_fraction: float = 0.12, altitude_m: float = 0.0, n_stations: int = 20,
+                   tol: float = 1e-12, max_iter: int = 60, name: str = "adkins_liebeck") -> dict:
+    """Numeric A-L design (analysis mode).  Give one of ``thrust_N``/``power_W`` and
+    one of ``omega_radps``/``rpm``/``tip_mach`` (rotational tip Mach at ``altitude_m``).
+
+    Returns a dict: ``geometry`` (a ``RotorGeometry`` defined at the BEMT stations
+    plus the tip, ready for ``analyze``), ``chord_m``, ``twist_rad``, ``phi_rad``,
+    ``r_m``, ``w_mps``, ``zeta`` (= w/V), ``thrust_N``, ``power_W``, ``eta``,
+    ``residual_max``, ``iterations``, ``omega_radps``, and the inputs.
+    """
+    p, target = _design_point(radius_m=radius_m, speed_mps=speed_mps, cl_design=cl_design, thrust_N=thrust_N,
+                              power_W=power_W, omega_radps=omega_radps, rpm=rpm, tip_mach=tip_mach,
+                              hub_fraction=hub_fraction, altitude_m=altitude_m, blades=blades)
+    sec = make_section(airfoil)
+    f = adkins_liebeck_function(sec, n_stations, target=target)
+    pargs = [p[k] for k in DESIGN_INPUTS]
+    w0, a0 = design_guess(sec, p, n_stations, target)
+    z, r, it = _damped_newton(_residual_and_jacobian(sec, n_stations, target), pargs, np.r_[w0, a0],
+                              tol, max_iter)
     if np.linalg.norm(r, np.inf) > 1e-8:
         raise InputError("design", f"Adkins-Liebeck design did not converge (residual "
                                    f"{np.linalg.norm(r, np.inf):.2e}); the design {target} may be "
@@ -281,21 +316,10 @@ def adkins_liebeck(*, blades: int, radius_m: float, speed_mps: float, airfoil="n
     res.update({
         "w_mps": float(z[0]), "zeta": float(z[0] / speed_mps) if speed_mps > 0 else math.inf,
         "alpha_rad": z[1:], "r_m": xi * radius_m, "r_over_R": xi, "residual_max":
-        float(np.max(np.abs(res["residual"]))), "iterations": it, "omega_radps": omega_radps,
+        float(np.max(np.abs(res["residual"]))), "iterations": it, "omega_radps": p["omega_radps"],
         "inputs": dict(p), "target": target, "section": sec,
     })
-    # geometry for analysis: the design stations plus tip (chord, twist extrapolated linearly)
-    x_tip = np.r_[xi, 1.0]
-    c_tip = np.r_[res["chord_m"], max(res["chord_m"][-1] + (res["chord_m"][-1] - res["chord_m"][-2])
-                                      * (1 - xi[-1]) / (xi[-1] - xi[-2]), 1e-3 * radius_m)]
-    b_tip = np.r_[res["twist_rad"], res["twist_rad"][-1] + (res["twist_rad"][-1] - res["twist_rad"][-2])
-                  * (1 - xi[-1]) / (xi[-1] - xi[-2])]
-    x_all = np.r_[hub_fraction, x_tip]
-    c_all = np.r_[res["chord_m"][0], c_tip]
-    b_all = np.r_[res["twist_rad"][0], b_tip]
-    res["geometry"] = RotorGeometry(radius_m=float(radius_m), blades=int(blades), r_over_R=x_all,
-                                    chord_over_R=c_all / radius_m, beta_rad=b_all,
-                                    hub_fraction=float(hub_fraction), airfoil=sec, name=name)
+    res["geometry"] = _analysis_geometry(res, xi, radius_m, hub_fraction, blades, sec, name)
     return res
 
 
@@ -378,6 +402,36 @@ def adkins_liebeck_implicit(sec, n_stations: int = 20, *, target: str = "thrust"
                      list(res[1:]) + [zs[0], zs[1:]], list(DESIGN_INPUTS), names + ["w_mps", "alpha_rad"])
     _CACHE[key] = (fn, sec)
     return fn
+
+
+def station_clmax(sec, n_stations: int, hub_fraction: float) -> list:
+    """cl_max(Re) of the section at each design station (``mdo.airfoil.clmax`` fits over
+    Re 3e4-1e7, 2-D: the design point has no blade context); one fit for a section that
+    does not vary along the blade."""
+    key = (id(sec), "clmax", n_stations, float(hub_fraction))
+    if key not in _CACHE:
+        s, _ = station_layout(n_stations)
+        xi = hub_fraction + (1.0 - hub_fraction) * s
+        if getattr(sec, "spanwise", False):
+            fits = [fit_clmax(lambda a, re, x=x: section_coefficients(sec, a, re, 0.0, x)[0], re_range=(3e4, 1e7))
+                    for x in xi]
+        else:
+            fits = [fit_clmax(lambda a, re: section_coefficients(sec, a, re, 0.0)[0], re_range=(3e4, 1e7))] * len(xi)
+        _CACHE[key] = (fits, sec)
+    return _CACHE[key][0]
+
+
+def design_cl_stall_rows(sec, blade: dict, cl_design, hub_fraction: float, margin: float):
+    """The design point below stall: ``cl_design - (cl_max(Re_i) - margin) <= 0`` at every
+    station i (an [n x 1] expression), with ``Re_i`` the design point's section Reynolds
+    numbers (``blade["reynolds"]``, an output of the A-L design).  Adkins and Liebeck's
+    design holds the section cl at ``cl_design`` at every station with attached flow; a
+    design cl above the section's cl_max at its Reynolds number is no design at all (the
+    implicit solve then fails or lands past stall)."""
+    re = blade["reynolds"]
+    fits = station_clmax(sec, re.shape[0], hub_fraction)
+    clmax = ca.vertcat(*[fits[i](re[i]) for i in range(re.shape[0])])
+    return cl_design - (clmax - margin)
 
 
 def add_adkins_liebeck(problem, name: str, sec, inputs: dict, *, n_stations: int = 20,

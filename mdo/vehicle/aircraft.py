@@ -91,13 +91,15 @@ class DesignBounds:
     15.46, grows with AR^0.6) and by ``Aircraft(max_span_m=...)`` when the user has a
     hangar or gate limit; taper by the stall margin of the tip strips (cl_max falls
     with the tip chord's Reynolds number) - the box 0.2-1.0 only keeps the planform
-    a trapezoid.  Design speeds within -40 %/+30 % of the baseline; design cl of the
-    blade sections 0.4-1.0, below stall.
+    a trapezoid.  Design speeds within -40 %/+30 % of the baseline; the design cl of
+    the blade sections by the design point's stall limit at each station's Reynolds
+    number (``design_cl_stall_rows``, the vehicle's stall margin) - the box 0.2-1.5
+    is the range of the Adkins-Liebeck design.
     """
     design_thrust: tuple = (0.3, 3.0)
     design_speed: tuple = (0.6, 1.3)
     tip_radius: tuple = (0.5, 1.6)
-    design_cl: tuple = (0.4, 1.0)          # absolute
+    design_cl: tuple = (0.2, 1.5)          # absolute; held by stall at the design stations' Re
     span: tuple = (0.6, 1.6)
     taper: tuple = (0.2, 1.0)              # absolute
     twist_deg: tuple = (-8.0, 8.0)         # absolute
@@ -267,7 +269,7 @@ class Aircraft:
         dtp = self.design_point_constraints and self.tip_mach_limit != "off"
         for gm in self.groups:
             gm.add_design(problem, b, rotor_free="rotor" in self.free, positions_free=self.positions_free,
-                          design_point_constraint=dtp)
+                          design_point_constraint=dtp, stall_margin_cl=self.stall_margin_cl)
         self.design = {"wings": self._wing_design(problem)}
         first = self.groups[0].design
         self.design.update({k: first[k] for k in ("T_design", "V_design", "R", "cl_design", "eta", "P_rated")})

@@ -36,6 +36,7 @@ from ..core import units as u
 from ..core.atmosphere import atmosphere
 from ..powertrain import MotorGroup
 from ..rotor import PHI_MAX_RAD, PHI_MIN_RAD, adkins_liebeck, adkins_liebeck_implicit, bemt_function, section
+from ..rotor.design import design_cl_stall_rows
 from ..rotor.geometry import station_layout
 from .base import ResidualGroup, Unknown
 
@@ -85,8 +86,10 @@ class RotorGroupModel:
         return self._baseline_blade
 
     def add_design(self, problem, bounds, *, rotor_free: bool, positions_free: bool,
-                   design_point_constraint: bool) -> dict:
-        """Design variables, the blade (Adkins-Liebeck residuals) and the motor rating."""
+                   design_point_constraint: bool, stall_margin_cl: float | None = None) -> dict:
+        """Design variables, the blade (Adkins-Liebeck, solved in the graph), its design
+        point below stall (when the blade is designed and ``stall_margin_cl`` >= 0) and the
+        motor rating."""
         g, b = self.config, bounds
 
         def dv(name, init, lo, hi, unit, scale, desc, free=True, shape=1, design=True):
@@ -132,6 +135,13 @@ class RotorGroupModel:
                      "blades": g.blades}
         # the blade, solved inside the graph (no blade unknowns: issue 20)
         self.blade = dict(adkins_liebeck_implicit(self.section, self.n_stations)(**al_inputs))
+        if rotor_free and stall_margin_cl is not None and stall_margin_cl >= 0.0:
+            # the design cl is bounded by stall at each station's Reynolds number, not by a box
+            problem.constrain(f"{p} design cl below stall",
+                              design_cl_stall_rows(self.section, self.blade, d["cl_design"], g.hub_fraction,
+                                                   stall_margin_cl),
+                              kind="<=", rhs=0.0, scale=0.1, unit="-",
+                              labels=[f"{p} design station {i}" for i in range(self.n_stations)])
         a_d = float(atm_d["speed_of_sound_mps"])
         tip2 = (self.omega_design * d["R"]) ** 2 + d["V_design"] ** 2
         if design_point_constraint:

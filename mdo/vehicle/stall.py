@@ -33,11 +33,10 @@ from __future__ import annotations
 import casadi as ca
 import numpy as np
 
-from ..core.smooth import softplus
+from ..airfoil.clmax import fit_clmax
 
 __all__ = ["clmax_fit", "clmax_of_re", "stall_limits", "stall_correction", "stall_margin_rows"]
 
-_RE_GRID = np.geomspace(1e5, 2e7, 25)
 _CACHE: dict = {}
 
 
@@ -47,34 +46,19 @@ def _airfoil(name: str):
 
 
 def clmax_fit(airfoil: str) -> dict:
-    """Cubic fit of the surrogate's cl_max in ln Re: {"coef", "lnre_range", "max_error"}."""
-    if airfoil in _CACHE:
-        return _CACHE[airfoil]
-    af = _airfoil(airfoil)
-    a = np.radians(np.linspace(0.0, 25.0, 251))
-    clmax = np.array([float(np.max(np.asarray(af.cl(a, re), float))) for re in _RE_GRID])
-    x = np.log(_RE_GRID)
-    coef = np.polyfit(x, clmax, 3)
-    err = float(np.max(np.abs(np.polyval(coef, x) - clmax)))
-    _CACHE[airfoil] = {"coef": coef, "lnre_range": (float(x[0]), float(x[-1])), "max_error": err,
-                       "re": _RE_GRID.copy(), "clmax": clmax}
+    """Cubic fit of the surrogate's cl_max in ln Re (``mdo.airfoil.clmax``, Re 1e5-2e7):
+    {"coef", "lnre_range", "max_error", "re", "clmax", "fit"}."""
+    if airfoil not in _CACHE:
+        af = _airfoil(airfoil)
+        fit = fit_clmax(lambda a, re: af.cl(a, re), re_range=(1e5, 2e7))
+        _CACHE[airfoil] = {"coef": fit.coef, "lnre_range": fit.lnre_range, "max_error": fit.max_error,
+                           "re": fit.reynolds, "clmax": fit.clmax, "fit": fit}
     return _CACHE[airfoil]
 
 
 def clmax_of_re(airfoil: str, reynolds):
     """cl_max at ``reynolds`` (numbers or CasADi), from :func:`clmax_fit`."""
-    fit = clmax_fit(airfoil)
-    lo, hi = fit["lnre_range"]
-    if isinstance(reynolds, (ca.MX, ca.SX, ca.DM)):
-        x = ca.log(reynolds)
-        x = lo + softplus(x - lo, 0.1)
-        x = hi - softplus(hi - x, 0.1)
-        out = 0.0
-        for c in fit["coef"]:    # Horner
-            out = out * x + float(c)
-        return out
-    x = np.clip(np.log(np.asarray(reynolds, float)), lo, hi)
-    return np.polyval(fit["coef"], x)
+    return clmax_fit(airfoil)["fit"](reynolds)
 
 
 def stall_limits(airfoil: str) -> tuple:

@@ -47,12 +47,43 @@ def surface_half(s: Surface, p: Params, flat: bool = False) -> dict:
     tangents (AVL's linearized boundary condition), so that the lattice, and the
     influence matrix, do not depend on the twists.
     """
+    sec = _sections(s, p)
+    anchors, counts, edges = _edges(s, p)
+    pts, tans, le, chord_e = _edge_points(s, sec, edges, flat)
+    R, V = rotation_matrices(sec["incidence"], s.vertical)
+    RV = ca.mtimes(R, V)
+    o = ca.vertcat(*sec["origin"])
+    pv = ca.vertcat(*sec["pivot"])
+
+    def to_global(cols):
+        P = ca.horzcat(*cols)
+        return o + pv + ca.mtimes(R, ca.mtimes(V, P) - pv)   # rotate about the pivot
+
+    nc = s.nchord
+    cp_cols, tan_cols = _control_points(pts, tans, nc, len(edges) - 1)
+    t0 = ca.DM([1.0, 0.0, 0.0])
+    return {
+        "nodes": [to_global(pts[r]) for r in range(nc + 1)],
+        "cp": to_global(cp_cols),
+        "tangent": ca.mtimes(RV, ca.horzcat(*tan_cols)),
+        "tangent0": ca.mtimes(RV, ca.repmat(t0, 1, len(tan_cols))),
+        "le": to_global(le),
+        "edge_chord": ca.horzcat(*chord_e),
+        "edge_eta": ca.horzcat(*[ca.SX(e) for e in edges]),
+        "E": len(edges), "S": len(edges) - 1, "nc": nc,
+        "strip_airfoil": _strip_airfoils(s, [a[0] for a in anchors], counts),
+    }
+
+
+def _sections(s: Surface, p: Params) -> dict:
+    """The defining sections as parameters: chords, twists, quarter-chord points
+    (local frame: root leading edge at 0, span along +y), and the placement."""
     nm = s.name
     span = p(s.span, f"{nm}.span")
     c_root = p(s.root_chord, f"{nm}.root_chord")
     semispan = span / 2 if s.mirrored else span
-    K = len(s.sections)
     eta_k = np.array([sec.eta for sec in s.sections], dtype=float)
+    # the parameters in the order the lattice has always registered them
     chord_k = [c_root * p(sec.chord, f"{nm}.sections[{k}].chord") for k, sec in enumerate(s.sections)]
     twist_k = [p(sec.twist, f"{nm}.sections[{k}].twist") for k, sec in enumerate(s.sections)]
     sweep = [p(v, f"{nm}.sweep[{k}]") for k, v in enumerate(s.sweep)]
@@ -60,17 +91,20 @@ def surface_half(s: Surface, p: Params, flat: bool = False) -> dict:
     origin = [p(v, f"{nm}.origin[{k}]") for k, v in enumerate(s.origin)]
     pivot = [p(v, f"{nm}.pivot[{k}]") for k, v in enumerate(s.pivot)]
     incidence = p(s.incidence, f"{nm}.incidence") + p(s.tilt, f"{nm}.tilt")
-
-    # section quarter-chord points (local frame: root LE at 0, span along +y)
     y_k = [e * semispan for e in eta_k]
     xq_k, z_k = [0.25 * chord_k[0]], [0.0]
-    for k in range(K - 1):
+    for k in range(len(s.sections) - 1):
         dy = y_k[k + 1] - y_k[k]
         xq_k.append(xq_k[k] + ca.tan(sweep[k]) * dy)
         z_k.append(z_k[k] + ca.tan(dih[k]) * dy)
+    return {"semispan": semispan, "eta": eta_k, "chord": chord_k, "twist": twist_k, "xq": xq_k, "z": z_k,
+            "origin": origin, "pivot": pivot, "incidence": incidence}
 
-    # strip edges: anchors (sections and breaks) with cosine spacing in between
-    anchors = [(nom, p(val, f"{nm}.anchor[{i}]")) for i, (nom, val) in enumerate(s.anchors())]
+
+def _edges(s: Surface, p: Params):
+    """Strip edges (fractions of the semispan): the anchors (sections and breaks) with
+    cosine spacing in between.  Returns (anchors, panel counts, edges)."""
+    anchors = [(nom, p(val, f"{s.name}.anchor[{i}]")) for i, (nom, val) in enumerate(s.anchors())]
     counts = s.panel_counts()
     edges = []
     for i, n in enumerate(counts):
@@ -80,31 +114,32 @@ def surface_half(s: Surface, p: Params, flat: bool = False) -> dict:
             if i > 0 and j == 0:
                 continue
             edges.append(a if j == 0 else b if j == n else a + (b - a) * float(gj))
-    E = len(edges)
-    S = E - 1
-    nc = s.nchord
+    return anchors, counts, edges
 
-    # chordwise stations and camber (numbers) per section
-    xi_b = (np.arange(nc) + 0.25) / nc
-    xi_c = (np.arange(nc) + 0.75) / nc
-    cambers = [camber_line(sec.airfoil if sec.airfoil is not None else s.airfoil) for sec in s.sections]
+
+def _edge_points(s: Surface, sec: dict, edges: list, flat: bool):
+    """At every strip edge: the lattice's chordwise points (bound-vortex rows and the
+    trailing edge), the camber-line tangents at the control rows, the leading edge and
+    the chord, in the surface's local frame."""
+    nc = s.nchord
+    xi_b = (np.arange(nc) + 0.25) / nc      # bound vortices at the panels' quarter chords
+    xi_c = (np.arange(nc) + 0.75) / nc      # control points at three quarters
+    cambers = [camber_line(k.airfoil if k.airfoil is not None else s.airfoil) for k in s.sections]
     zb_k = np.array([[cl.z(x) for x in xi_b] for cl in cambers])        # K x nc
     sc_k = np.array([[cl.slope(x) for x in xi_c] for cl in cambers])
-
-    # edge quantities
     t0 = ca.DM([1.0, 0.0, 0.0])
     pts = {r: [] for r in range(nc + 1)}
     tans = {r: [] for r in range(nc)}
     le, chord_e = [], []
     for e in edges:
-        w = interpolation_weights(e, eta_k, s.eta_smoothing)
+        w = interpolation_weights(e, sec["eta"], s.eta_smoothing)
 
         def mix(vals):
             return sum(wk * v for wk, v in zip(w, vals) if not (isinstance(wk, float) and wk == 0.0))
 
-        c = mix(chord_k)
-        th = mix(twist_k)
-        q = ca.vertcat(mix(xq_k), e * semispan, mix(z_k))
+        c = mix(sec["chord"])
+        th = mix(sec["twist"])
+        q = ca.vertcat(mix(sec["xq"]), e * sec["semispan"], mix(sec["z"]))
         # streamwise (x-z plane) section rotated nose-up by the twist about its quarter chord
         t = ca.vertcat(ca.cos(th), 0, -ca.sin(th))
         u = ca.vertcat(ca.sin(th), 0, ca.cos(th))
@@ -120,21 +155,15 @@ def surface_half(s: Surface, p: Params, flat: bool = False) -> dict:
         pts[nc].append(q + 0.75 * c * tg)
         le.append(q - 0.25 * c * tg)
         chord_e.append(c)
+    return pts, tans, le, chord_e
 
-    R, V = rotation_matrices(incidence, s.vertical)
-    RV = ca.mtimes(R, V)
-    o = ca.vertcat(*origin)
-    pv = ca.vertcat(*pivot)
 
-    def to_global(cols):
-        P = ca.horzcat(*cols)
-        return o + pv + ca.mtimes(R, ca.mtimes(V, P) - pv)   # rotate about the pivot
-
-    nodes = [to_global(pts[r]) for r in range(nc + 1)]
-    # control points on the lattice itself: on the straight chordwise legs between the
-    # row's bound point and the next node (half way; 2/3 of the way to the trailing edge
-    # on the last row), so that camber never lifts a control point off the legs of a
-    # narrow strip (the camber enters through the normals' slope, as in thin-airfoil theory)
+def _control_points(pts: dict, tans: dict, nc: int, S: int):
+    """Control points on the lattice itself: on the straight chordwise legs between the
+    row's bound point and the next node (half way; 2/3 of the way to the trailing edge
+    on the last row), so that camber never lifts a control point off the legs of a
+    narrow strip (the camber enters through the normals' slope, as in thin-airfoil
+    theory); and their tangents (local frame)."""
     frac = [0.5] * (nc - 1) + [2.0 / 3.0]
     cp_cols, tan_cols = [], []
     for si in range(S):
@@ -143,20 +172,7 @@ def surface_half(s: Surface, p: Params, flat: bool = False) -> dict:
             b = 0.5 * (pts[r + 1][si] + pts[r + 1][si + 1])
             cp_cols.append(a + frac[r] * (b - a))
             tan_cols.append(0.5 * (tans[r][si] + tans[r][si + 1]))
-    cp = to_global(cp_cols)
-    tangent = ca.mtimes(RV, ca.horzcat(*tan_cols))
-    tangent0 = ca.mtimes(RV, ca.repmat(t0, 1, len(tan_cols)))
-    return {
-        "nodes": nodes,
-        "cp": cp,
-        "tangent": tangent,
-        "tangent0": tangent0,
-        "le": to_global(le),
-        "edge_chord": ca.horzcat(*chord_e),
-        "edge_eta": ca.horzcat(*[ca.SX(e) for e in edges]),
-        "E": E, "S": S, "nc": nc,
-        "strip_airfoil": _strip_airfoils(s, [a[0] for a in anchors], counts),
-    }
+    return cp_cols, tan_cols
 
 
 def _strip_airfoils(s: Surface, anchor_nominal, counts):
