@@ -164,3 +164,27 @@ def test_design_input_errors():
     with pytest.raises(InputError, match="airfoil"):
         adkins_liebeck(airfoil="no_such_section", **base)
     assert set(DESIGN_INPUTS) >= {"target", "speed_mps", "radius_m", "cl_design"}
+
+
+def test_design_cl_is_held_by_stall_at_the_design_stations():
+    """cl_design <= cl_max(Re_i) - margin at every design station (``design_cl_stall_rows``):
+    the cl_max(Re) fit follows the section's scanned maxima, a tripped NACA 4412 blade
+    designed at cl 0.7 is inside the limit, and the same blade at cl 1.1 is not (its hub
+    station runs at Re 2.6e4, where the fit gives cl_max 1.17)."""
+    from mdo.rotor import section
+    from mdo.rotor.design import design_cl_stall_rows, station_clmax
+    sec = section("naca4412@xtr=0.1")
+    fits = station_clmax(sec, 16, 0.12)
+    assert fits[0].max_error < 0.08
+    a = np.radians(np.linspace(0.0, 25.0, 251))
+    for re in (1e5, 1e6):
+        scanned = float(np.max(np.asarray(sec.cl(a, re), float)))
+        assert float(fits[0](re)) == pytest.approx(scanned, abs=0.08)
+    rows = {}
+    for cl in (0.7, 1.1):
+        b = adkins_liebeck(blades=2, radius_m=0.95, speed_mps=60.0, airfoil=sec, cl_design=cl, thrust_N=1500.0,
+                           rpm=2400.0, hub_fraction=0.12, n_stations=16)
+        rows[cl] = np.array(design_cl_stall_rows(sec, {"reynolds": ca.DM(b["reynolds"])}, cl, 0.12, 0.1)).ravel()
+    assert np.all(rows[0.7] < 0.0)
+    assert np.any(rows[1.1] > 0.0)
+    assert rows[1.1].max() == pytest.approx(rows[1.1][0])     # the hub station (Re 2.6e4) limits first

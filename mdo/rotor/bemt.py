@@ -57,14 +57,17 @@ the hub station pinned there held the TTW's cruise collective (bound multipliers
 collective -10..60 deg, every station) found no case with roots on both sides of pi/2,
 so widening the bounds adds no second root.  On (0, 3 pi/4] ``|sin phi| = sin phi >=
 0.7`` near the end and the residual is smooth; the loads are written without
-``1/cos(phi)`` (below) so that ``phi = pi/2`` is an ordinary point.
+``1/cos(phi)`` or ``1/A`` (below), so that ``phi = pi/2`` is an ordinary point and no
+iterate meets a pole.
 The |sin phi| factors carry Ning's sign conventions into the other quadrants (used
 only by the analysis fallback).
 
 At the root the induced velocities and loads follow without dividing by ``Vx``:
 
-    v = Vy k'/(1 + k') = Vy q ct/(cos(phi) + q ct),   W = (Vy - v)/cos(phi) = Vy/(cos(phi) + q ct),
-    u = W sin(phi) - Vx                                (q = sigma'/(4 F |sin phi|))
+    with A = cos(phi) + q ct, B = sin(phi) - q cn, q = sigma'/(4 F |sin phi|):
+    swirl momentum gives W A = Vy (v = Vy k'/(1 + k')), axial momentum W B = Vx, and R = 0
+    is their compatibility; W = (Vy A + Vx B)/(A^2 + B^2) (both at the root, no pole
+    off it), v = Vy - W cos(phi), u = W sin(phi) - Vx
     N' = 1/2 rho W^2 c cn,  T' = 1/2 rho W^2 c ct   (per blade, per unit span)
     Gamma = 1/2 W c cl                                (bound circulation)
 
@@ -180,12 +183,16 @@ def station_physics(phi, r, chord, theta, vx, vy, rho, mu, a_sound, blades, r_ti
     if hub_loss:
         F = F * (2.0 / math.pi) * acos(lib.exp(-0.5 * blades * (r - r_hub) / (r_hub * asphi)))
     q = sigma / (4.0 * F * asphi)          # sigma'/(4 F |sin phi|)
-    residual = (vy * (sphi - q * cn) - vx * (cphi + q * ct)) / w0
-    # v = Vy k'/(1 + k') and W = (Vy - v)/cos(phi) with k' = q ct/cos(phi), written
-    # without 1/cos(phi) so that phi = pi/2 (the hub of a steeply pitched blade) is regular
-    den = cphi + q * ct
-    v = vy * q * ct / den
-    W = vy / den
+    A = cphi + q * ct
+    B = sphi - q * cn
+    residual = (vy * B - vx * A) / w0
+    # Momentum gives W A = Vy (swirl: W cos(phi) = Vy - v, v = Vy k'/(1 + k')) and W B = Vx
+    # (axial: W sin(phi) = Vx + u); the residual is their compatibility Vy B = Vx A.  W is
+    # their least-squares combination: equal to both at the root, and with no pole where
+    # A or B alone vanishes (A = 0 just past phi = pi/2 on a lightly loaded station, B = 0
+    # in hover away from the root), so every iterate in (0, 3 pi/4] has finite loads.
+    W = (vy * A + vx * B) / (A * A + B * B)
+    v = vy - W * cphi
     u = W * sphi - vx
     dyn = 0.5 * rho * W * W * chord
     return {
