@@ -427,7 +427,13 @@ def design_cl_stall_rows(sec, blade: dict, cl_design, hub_fraction: float, margi
     numbers (``blade["reynolds"]``, an output of the A-L design).  Adkins and Liebeck's
     design holds the section cl at ``cl_design`` at every station with attached flow; a
     design cl above the section's cl_max at its Reynolds number is no design at all (the
-    implicit solve then fails or lands past stall)."""
+    implicit solve then fails or lands past stall).  Every station counts, the hub's too:
+    there the A-L chord follows Prandtl's hub loss factor towards zero and the Reynolds
+    number is lowest (1e4-4e4 on a GA propeller), so the hub station limits first; a limit
+    on the loaded stations alone (25-95 % of the radius) was tried and lets the design cl
+    rise to where the A-L solve itself fails at the hub (cl 1.2 on a tripped NACA 4412
+    GA-2P blade), which IPOPT meets as failed evaluations.  A radial cl distribution in
+    the design would lift this (not modelled)."""
     re = blade["reynolds"]
     fits = station_clmax(sec, re.shape[0], hub_fraction)
     clmax = ca.vertcat(*[fits[i](re[i]) for i in range(re.shape[0])])
