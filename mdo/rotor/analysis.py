@@ -383,7 +383,7 @@ def analysis_function(sec, n_stations: int, n_points: int, n_azimuth: int = 1, *
                       tip_loss=True, hub_loss=True) -> ca.Function:
     """One CasADi Function for a K-point sweep: inputs as ``bemt_function`` without
     ``phi_rad`` (operating inputs with K columns), outputs ``phi_rad``,
-    ``found`` and every "full" output, each with K columns.  Searches (0, pi/2] only
+    ``found`` and every "full" output, each with K columns.  Searches (0, PHI_MAX_RAD] only
     (the fallback quadrants are Python; ``analyze`` applies them)."""
     ps = point_solver(sec, n_stations, n_azimuth, tip_loss=tip_loss, hub_loss=hub_loss)
     full = bemt_function(sec, n_stations, n_azimuth, outputs="full", tip_loss=tip_loss,
