@@ -49,18 +49,22 @@ AIRFRAME_OPTIONS = {
     "nacelle_slipstream": (bool,),
     "cooling_drag": (bool,),
     "airframe_calibration": (float, 0.5, 1.5),
+    "wing_mass": (str, "raymer", "bending"),
 }
 
 
 def airframe_variant(cfg, motor_model: str = "pmsm", sections: str = "as_defined", leakage_fraction=None,
-                     nacelle_slipstream: bool = True, cooling_drag: bool = True, airframe_calibration=None):
+                     nacelle_slipstream: bool = True, cooling_drag: bool = True, airframe_calibration=None,
+                     wing_mass: str = "raymer"):
     """``cfg`` with the what-ifs of ``AIRFRAME_OPTIONS``: every motor group's ``model``;
     ``sections="free_transition"`` drops the transition setting of every wing's and rotor's
     airfoil (``"NACA_63_412@xtr=0.1"`` -> the free-transition XFOIL polar ``"NACA_63_412"``);
     the leakage fraction, nacelles in the slipstream, cooling drag on/off
     (``VehicleConfig.drag``); ``airframe_calibration`` replaces the mass build-up's one factor
-    on the non-battery terms (``mass_inputs``; 1.0: the raw regressions).  The defaults
-    return ``cfg``'s own models."""
+    on the non-battery terms (``mass_inputs``; 1.0: the raw regressions); ``wing_mass="bending"``
+    gives the lifting wings a ``WingStructure`` (aluminium defaults: their mass responds to
+    span, taper and lift share through the bending material, ``mdo.vehicle.wing_structure``)
+    where ``cfg`` has none.  The defaults return ``cfg``'s own models."""
     from dataclasses import replace
     free = sections == "free_transition"
     strip = (lambda name: name.split("@", 1)[0]) if free else (lambda name: name)
@@ -73,7 +77,12 @@ def airframe_variant(cfg, motor_model: str = "pmsm", sections: str = "as_defined
                    cooling_momentum_loss=d.cooling_momentum_loss if cooling_drag else 0.0)
     mass_inputs = cfg.mass_inputs if airframe_calibration is None else \
         {**cfg.mass_inputs, "airframe_calibration": float(airframe_calibration)}
-    return replace(cfg, rotor_groups=groups, wings=wings, drag=drag, mass_inputs=mass_inputs)
+    structure = cfg.wing_structure
+    if wing_mass == "bending" and structure is None:
+        from .vehicle.wing_structure import WingStructure
+        structure = WingStructure()
+    return replace(cfg, rotor_groups=groups, wings=wings, drag=drag, mass_inputs=mass_inputs,
+                   wing_structure=structure)
 
 
 def trajectory_envelope(max_block_time_min=None, min_climb_gradient_pct=None):

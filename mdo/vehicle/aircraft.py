@@ -71,7 +71,7 @@ from ..wake import WakeRotor, influence_sum_parts, spin_for, wake_influences
 from ..wing import VLM, Body, body_drag, constant_area, crossflow_normal_force, profile_drag, trapezoid
 from ..wing.buildup import CP_AIR
 from ..wing.drag import form_factor_wing, skin_friction
-from .aircraft_nodes import _num, _row, node_outputs, operating_limits
+from .aircraft_nodes import _num, _row, node_outputs, operating_limits, wing_design_lift_rows
 from .balance import add_balance, trim_residuals, trim_unknowns, trim_upwash
 from .base import G0, NodeEvaluation, Output, ResidualGroup, State, Unknown
 from .config import VehicleConfig, WingConfig, disks_in_one_plane
@@ -313,7 +313,9 @@ class Aircraft:
                         {w: v["taper"] for w, v in d["wings"].items()},
                         {gm.name: gm.design["R"] for gm in self.groups},
                         {gm.name: gm.design["P_rated"] for gm in self.groups},
-                        {gm.name: gm.design["omega_rated"] for gm in self.groups})
+                        {gm.name: gm.design["omega_rated"] for gm in self.groups},
+                        wing_design_lift_N=self._wing_design_lifts(problem),
+                        rotor_span_eta={gm.name: gm.design["eta"] for gm in self.groups})
         self.mass_design = md
         if self.mass_model == "buildup":
             W0 = self.togw_baseline_kg
@@ -326,6 +328,24 @@ class Aircraft:
             self.togw = self.togw_baseline_kg
         problem.output("togw_kg", self.togw, unit="kg", summary=True)
         problem.output("battery_mass_kg", self.config.battery.mass_kg, unit="kg", summary=True)
+
+    def _wing_design_lifts(self, problem) -> dict | None:
+        """With a ``WingStructure``: each lifting wing's 1 g design lift (N), sized in every
+        stage like the motor ratings - at least the wing's lift at every node ("<wing> design
+        lift"); its bending material follows it (``mdo.vehicle.wing_structure``)."""
+        if self.config.wing_structure is None or self.mass_model != "buildup":
+            self.wing_design_lift = {}
+            return None
+        W0 = self.togw_baseline_kg * G0
+        S = sum(w.area_m2 for w in self.lifting_wings)
+        self.wing_design_lift = {
+            w.name: problem.variable(f"{w.name}.design_lift", 1, unit="N", scale=W0, lower=0.02 * W0,
+                                     upper=3.0 * W0, init=W0 * w.area_m2 / S, design=False,
+                                     description=f"{w.name}: 1 g lift its structure is sized for (sized)")
+            for w in self.lifting_wings}
+        for name, F in self.wing_design_lift.items():
+            problem.output(f"{name}.design_lift_kN", F / 1000.0, unit="kN", summary=True)
+        return self.wing_design_lift
 
     # ------------------------------------------------------------------ geometry
     def wing_surfaces(self, d: dict) -> tuple:
@@ -596,6 +616,7 @@ class Aircraft:
         residuals += trim_residuals(self, nodes, aero, rot, env)
         if self.limits_on:
             residuals += operating_limits(self, nodes, rot, po, aero, env)
+        residuals += wing_design_lift_rows(self, aero, env)
         out = node_outputs(self, nodes, rot, aero, po, env)
         dist = {"strip_cl": Output(aero["vlm"]["cl"], "-", "section lift coefficient of each lattice strip "
                                                          "(with the wakes)")}

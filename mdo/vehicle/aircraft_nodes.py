@@ -15,7 +15,7 @@ from .balance import surface_lift_N
 from .base import Output, ResidualGroup
 from .stall import stall_margin_rows
 
-__all__ = ["operating_limits", "node_outputs"]
+__all__ = ["operating_limits", "node_outputs", "wing_design_lift_rows"]
 
 
 def _row(x, K=None) -> ca.DM:
@@ -69,6 +69,18 @@ def operating_limits(ac, nodes, rot, po, aero, env) -> list:
     if expr is not None:
         out.append(ResidualGroup("stall margin", expr, kind="<=", scale=0.1, unit="-", row_labels=labels,
                                  columns=cols))
+    return out
+
+
+def wing_design_lift_rows(ac, aero, env) -> list:
+    """Sizing of each wing's structure (a ``WingStructure``): its lift at every node at most
+    its design lift (the bending material is sized for ``n_ult`` times that)."""
+    names = [s_.name for s_ in ac.vlm.surfaces]
+    out = []
+    for name, F in getattr(ac, "wing_design_lift", {}).items():
+        L = surface_lift_N(ac.vlm, aero["vlm"], names.index(name), env["rho"], env["V"])
+        out.append(ResidualGroup(f"{name} design lift", L - F, kind="<=", scale=ac.togw_baseline_kg * 9.80665,
+                                 unit="N", row_labels=[f"{name} lift - design lift"]))
     return out
 
 

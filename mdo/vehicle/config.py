@@ -455,6 +455,10 @@ class VehicleConfig:
     cg_x_range_m: tuple | None = None
     drag: AirframeDragConfig = field(default_factory=AirframeDragConfig)
     mass_inputs: dict = field(default_factory=dict)
+    # the lifting wings' mass: None is Raymer's Eq. 15.46 alone (each wing sized for the whole
+    # N_z W); a WingStructure adds the bending material's response to span, taper, thickness
+    # and the wing's own lift share (mdo.vehicle.wing_structure)
+    wing_structure: object = None
     notes: tuple = ()
 
     def __post_init__(self):

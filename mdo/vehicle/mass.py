@@ -36,8 +36,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..core import units as u
+from ..core.errors import InputError
 from ..core.smooth import xp
 from .config import VehicleConfig, WingConfig, replace
+from .wing_structure import G0, bending_material_kg
 
 __all__ = ["ASSUMPTIONS", "MassDesign", "mass_terms", "total_mass", "solve_togw",
            "togw_residual", "mass_table_markdown"]
@@ -63,6 +65,10 @@ class MassDesign:
     rotor_radius_m: dict
     motor_rated_power_W: dict = None
     motor_rated_speed_radps: dict = None
+    # with a WingStructure (VehicleConfig.wing_structure): each wing's 1 g design lift (N; default
+    # its area's share of the weight) and the rotors' span positions (fractions of the semispan)
+    wing_design_lift_N: dict = None
+    rotor_span_eta: dict = None
 
     @classmethod
     def baseline(cls, cfg: VehicleConfig) -> "MassDesign":
@@ -74,6 +80,14 @@ class MassDesign:
 
     def rated_speed_radps(self, g):
         return (self.motor_rated_speed_radps or {}).get(g.name, g.motor_rated_rpm * u.RPM)
+
+    def design_lift_N(self, cfg, w, togw_kg):
+        default = G0 * togw_kg * w.area_m2 / sum(x.area_m2 for x in cfg.lifting_wings)
+        return (self.wing_design_lift_N or {}).get(w.name, default)
+
+    def span_eta(self, g):
+        eta = (self.rotor_span_eta or {}).get(g.name, g.span_eta)
+        return [eta[i] for i in range(len(g.span_eta))]
 
 
 def _q_cruise_psf(cfg: VehicleConfig) -> float:
@@ -124,10 +138,15 @@ def mass_terms(cfg: VehicleConfig, togw_kg, design: MassDesign | None = None) ->
     W_lb = togw_kg / u.LB
     nz_w = cfg.ultimate_load_factor * W_lb
     q = _q_cruise_psf(cfg)
+    rotors = _rotor_masses(cfg, d)
     terms = {}
     for w in cfg.lifting_wings:
-        terms[f"wing: {w.name}"] = _wing_lb(w, d.wing_span_m.get(w.name, w.span_m),
-                                           d.wing_taper.get(w.name, w.taper), nz_w, q) * u.LB
+        span, taper = d.wing_span_m.get(w.name, w.span_m), d.wing_taper.get(w.name, w.taper)
+        if cfg.wing_structure is None:
+            terms[f"wing: {w.name}"] = _wing_lb(w, span, taper, nz_w, q) * u.LB
+        else:
+            terms[f"wing: {w.name}"] = _wing_secondary_kg(cfg, w.name) + _wing_bending_kg(
+                cfg, w, span, taper, d.design_lift_N(cfg, w, togw_kg), _relief_masses(cfg, d, w, span, rotors))
     for w in cfg.horizontal_tails:
         terms[f"horizontal tail: {w.name}"] = _htail_lb(w, nz_w, q) * u.LB
     for w in cfg.fins:
@@ -149,22 +168,12 @@ def mass_terms(cfg: VehicleConfig, togw_kg, design: MassDesign | None = None) ->
     terms["furnishings"] = (0.0582 * W_lb - 65.0) * u.LB
     tilting_mass = 0.0
     for g in cfg.rotor_groups:
-        R = d.rotor_radius_m.get(g.name, g.radius_m)
-        omega = d.rated_speed_radps(g)
-        P_r = d.rated_power_W(g)
-        # the motor is sized for its largest torque: the short-time rating at rated speed
-        torque_ftlb = (g.motor.short_time_power_factor * P_r / omega) / (u.LBF * u.FT)
-        m_motor = g.count * 0.3928 * torque_ftlb ** 0.8587 * u.LB
-        D_ft = 2 * R / u.FT
-        P_shp = g.motor.short_time_power_factor * P_r / u.HP
-        m_prop = g.count * 31.92 * g.blades ** 0.391 * (D_ft * P_shp / 1000.0) ** 0.782 * u.LB
-        m_esc = g.count * g.motor.short_time_power_factor * P_r / ASSUMPTIONS["esc_specific_power_Wpkg"]
+        m_motor, m_prop, m_esc, m_nac = rotors[g.name]
         terms[f"motors: {g.name} ({g.count})"] = m_motor
         terms[f"propellers: {g.name} ({g.count})"] = m_prop
         terms[f"motor controllers: {g.name} ({g.count})"] = m_esc
         if g.nacelle_wetted_area_m2:
-            terms[f"nacelles: {g.name} ({g.count})"] = \
-                g.count * g.nacelle_wetted_area_m2 * ASSUMPTIONS["nacelle_areal_mass_kgpm2"]
+            terms[f"nacelles: {g.name} ({g.count})"] = m_nac
         if any(cfg.wing(wn).tilting for wn in g.wings):
             tilting_mass = tilting_mass + m_motor + m_prop
     if cfg.kind == "tilt_wing":
@@ -178,6 +187,68 @@ def mass_terms(cfg: VehicleConfig, togw_kg, design: MassDesign | None = None) ->
     terms[f"battery ({b.cells_series}s x {b.cells_parallel}p, packaged x {b.packaging_factor:g})"] = b.mass_kg
     terms[f"payload ({cfg.passengers} passengers)"] = cfg.passengers * cfg.passenger_mass_kg
     return terms
+
+
+def _rotor_masses(cfg: VehicleConfig, d: MassDesign) -> dict:
+    """Per group (all its rotors): motors (NDARC), propellers (Roskam), controllers, nacelles [kg]."""
+    out = {}
+    for g in cfg.rotor_groups:
+        R = d.rotor_radius_m.get(g.name, g.radius_m)
+        omega = d.rated_speed_radps(g)
+        P_r = d.rated_power_W(g)
+        # the motor is sized for its largest torque: the short-time rating at rated speed
+        torque_ftlb = (g.motor.short_time_power_factor * P_r / omega) / (u.LBF * u.FT)
+        m_motor = g.count * 0.3928 * torque_ftlb ** 0.8587 * u.LB
+        D_ft = 2 * R / u.FT
+        P_shp = g.motor.short_time_power_factor * P_r / u.HP
+        m_prop = g.count * 31.92 * g.blades ** 0.391 * (D_ft * P_shp / 1000.0) ** 0.782 * u.LB
+        m_esc = g.count * g.motor.short_time_power_factor * P_r / ASSUMPTIONS["esc_specific_power_Wpkg"]
+        m_nac = g.count * (g.nacelle_wetted_area_m2 or 0.0) * ASSUMPTIONS["nacelle_areal_mass_kgpm2"]
+        out[g.name] = (m_motor, m_prop, m_esc, m_nac)
+    return out
+
+
+def _relief_masses(cfg: VehicleConfig, d: MassDesign, w: WingConfig, span_m, rotors: dict) -> list:
+    """(mass, y) of each rotor (motor, propeller, controller, nacelle) on one half of wing ``w``."""
+    out = []
+    for g in cfg.rotor_groups:
+        if w.name not in g.wings:
+            continue
+        per_rotor = sum(rotors[g.name]) / g.count
+        out += [(per_rotor, eta * span_m / 2) for eta in d.span_eta(g)]
+    return out
+
+
+def _wing_bending_kg(cfg, w: WingConfig, span_m, taper, design_lift_N, relief):
+    return bending_material_kg(cfg.wing_structure, w.area_m2, span_m, taper, w.thickness_to_chord,
+                               cfg.ultimate_load_factor, design_lift_N, relief)
+
+
+_SECONDARY_CACHE: dict = {}
+
+
+def _wing_secondary_kg(cfg: VehicleConfig, wing_name: str) -> float:
+    """The wing mass that the bending material does not explain (skins beyond the caps' need,
+    ribs, leading and trailing edges, controls; it follows the area, which the design holds):
+    Raymer's Eq. 15.46 less the bending material, both of the baseline design at the baseline
+    gross weight.  The level is the regression's, the response to span, taper, thickness and
+    lift share the bending physics' (``mdo.vehicle.wing_structure``)."""
+    key = (repr(cfg), wing_name)
+    if key not in _SECONDARY_CACHE:
+        raymer = replace(cfg, wing_structure=None)
+        d0 = MassDesign.baseline(raymer)
+        W0 = solve_togw(raymer, d0)
+        w = cfg.wing(wing_name)
+        nz_w = cfg.ultimate_load_factor * W0 / u.LB
+        m_raymer = float(_wing_lb(w, w.span_m, w.taper, nz_w, _q_cruise_psf(cfg)) * u.LB)
+        m_bend = float(_wing_bending_kg(cfg, w, w.span_m, w.taper, d0.design_lift_N(cfg, w, W0),
+                                        _relief_masses(cfg, d0, w, w.span_m, _rotor_masses(cfg, d0))))
+        if m_bend >= m_raymer:
+            raise InputError(f"wing_structure ({wing_name})",
+                             f"bending material {m_bend:.1f} kg at the baseline must stay below Raymer's "
+                             f"wing {m_raymer:.1f} kg (a lighter construction, or the regression alone)")
+        _SECONDARY_CACHE[key] = m_raymer - m_bend
+    return _SECONDARY_CACHE[key]
 
 
 def total_mass(cfg: VehicleConfig, togw_kg, design: MassDesign | None = None):
@@ -230,6 +301,19 @@ def mass_table_markdown(cfg: VehicleConfig, design: MassDesign | None = None) ->
               "Assumptions: " + ", ".join(f"{k} = {v}" for k, v in ASSUMPTIONS.items()) + ".",
               "Inputs specific to this vehicle: " + ", ".join(f"{k} = {v}" for k, v in cfg.mass_inputs.items())
               + "."]
+    if cfg.wing_structure is not None:
+        d = design or MassDesign.baseline(cfg)
+        rotors = _rotor_masses(cfg, d)
+        lines += ["", "Wings (``mdo.vehicle.wing_structure``): area-held part (Raymer Eq. 15.46 less the "
+                  "bending material, both at the baseline) + bending material of the design, sized for "
+                  f"n_ult = {cfg.ultimate_load_factor:g} times the wing's design lift:", "",
+                  "| wing | design lift (kN) | area-held part (kg) | bending material (kg) |", "|---|---:|---:|---:|"]
+        for w in cfg.lifting_wings:
+            span, taper = d.wing_span_m.get(w.name, w.span_m), d.wing_taper.get(w.name, w.taper)
+            F = d.design_lift_N(cfg, w, W)
+            m_b = _wing_bending_kg(cfg, w, span, taper, F, _relief_masses(cfg, d, w, span, rotors))
+            lines.append(f"| {w.name} | {float(F) / 1e3:.2f} | {_wing_secondary_kg(cfg, w.name):.1f} | "
+                         f"{float(m_b):.1f} |")
     if cfg.notes:
         lines += ["", "Notes:"] + [f"- {n}" for n in cfg.notes]
     return "\n".join(lines) + "\n"

@@ -53,6 +53,8 @@ def _design_numbers(vehicle, solution) -> dict:
     for name, w in d["wings"].items():
         out["wings"][name] = {"span_m": float(_val(solution, w["span"])), "taper": float(_val(solution, w["taper"])),
                               "twist_deg": np.degrees(_val(solution, w["twist"]).ravel()).tolist()}
+        if name in getattr(vehicle, "wing_design_lift", {}):
+            out["wings"][name]["design_lift_N"] = float(_val(solution, vehicle.wing_design_lift[name]))
     out["rotor_centers_m"] = [[float(_val(solution, c)) for c in p] for p in vehicle.rotor_positions]
     out["togw_kg"] = float(_val(solution, vehicle.togw))
     out["battery_mass_kg"] = float(vehicle.config.battery.mass_kg)
@@ -274,7 +276,10 @@ def add_vehicle_reports(problem, vehicle, mission, figures: bool = True):
                         {n: w["taper"] for n, w in design["wings"].items()},
                         {n: g["tip_radius_m"] for n, g in rg.items()},
                         {n: g["motor_rated_power_W"] for n, g in rg.items()},
-                        {n: g["motor_rated_rpm"] * 2 * math.pi / 60 for n, g in rg.items()})
+                        {n: g["motor_rated_rpm"] * 2 * math.pi / 60 for n, g in rg.items()},
+                        wing_design_lift_N={n: w["design_lift_N"] for n, w in design["wings"].items()
+                                            if "design_lift_N" in w},
+                        rotor_span_eta={n: g["span_eta"] for n, g in rg.items()})
         (out / "mass.md").write_text(mass_table_markdown(vehicle.config, md))
         (out / "design.json").write_text(json.dumps(design, indent=1))
         (out / "energy.md").write_text(energy_breakdown(vehicle, mission, solution))

@@ -1,0 +1,132 @@
+"""The wing's bending material: how the wing mass responds to span, taper, thickness and
+the share of the lift the wing carries.
+
+Raymer's Eq. 15.46 is a regression over single-wing light aircraft: it sizes every wing
+for the whole ``N_z W`` and grows with ``AR^0.6``.  A tandem whose front wing carries
+84 % of the lift, or a long wing that the optimizer stretches, needs the physics the
+regression stands for (Torenbeek, *Synthesis of Subsonic Airplane Design*, 1982, Sec. 8.4
+and App. C: the material that resists the root bending moment is the design-sensitive
+part of a wing's weight):
+
+* **Load.**  The wing's design lift ``F`` (N, 1 g; sized: at least the wing's lift at every
+  node, ``Aircraft``), times the ultimate load factor, spread elliptically over the span
+  (the ideal loading the weight estimates assume).  Per half wing, with ``u = y/s`` and
+  ``l0 = 4 (n F / 2) / (pi s)``::
+
+      V(u) = l0 s [pi/4 - (u sqrt(1-u^2) + asin u)/2]                        (S1)
+      M(u) = l0 s^2 [(1-u^2)^1.5 / 3 - u (pi/4 - (u sqrt(1-u^2) + asin u)/2)] (S2)
+
+* **Inertia relief.**  Motors, propellers and nacelles on the wing, at ``y_i``, accelerated at
+  the same ``n``: ``M -= n g m_i (y_i - y)`` inboard of each, written with a softplus of
+  width ``relief_width_fraction * s`` (smooth in the rotor positions, which are design
+  variables).
+* **Material.**  Two spar caps at the box depth ``h = k_box (t/c) c(y)`` carry ``M/h`` each
+  at the allowable stress ``sigma``; the webs carry ``V`` at ``tau``::
+
+      m = 2 rho s int_0^1 [2 |M| / (sigma h) + |V| / tau] du                    (S3)
+
+  (both halves; ``|x|`` as ``sqrt(x^2 + eps^2)``, eps 1e-6 of the root value), by
+  Gauss-Legendre quadrature in ``u``, times a non-optimum factor (joints, fasteners,
+  cut-outs, minimum gauges on the ideal material).
+
+At constant area the caps grow like ``b^3 n F / ((t/c) S)``: ``AR^1.5`` and linear in the
+lift share, against Raymer's ``AR^0.6`` at the whole weight.  The rest of the wing (skins
+beyond the caps' need, ribs, leading and trailing edges, control surfaces) depends on the
+area, which the design holds: ``mdo.vehicle.mass`` takes it as the Raymer wing of the
+baseline less this model's bending material at the baseline (the regression's level, the
+bending physics' slopes).
+
+Material defaults: aluminium 2024-T3 (MMPDS-01: density 2780 kg/m^3, F_tu 483 MPa,
+F_su 283 MPa), with a cap allowable of 345 MPa (compression caps, stiffened-panel
+crippling below F_tu) and 200 MPa in the webs; ``k_box`` 0.85 (caps inside the section's
+depth); non-optimum factor 1.5.  These are assumptions of the class, stated, and fields
+of :class:`WingStructure` a user replaces for another construction (a composite wing).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import casadi as ca
+import numpy as np
+
+from ..core.errors import InputError
+
+__all__ = ["WingStructure", "bending_material_kg", "elliptic_shear_moment"]
+
+G0 = 9.80665
+
+
+@dataclass(frozen=True)
+class WingStructure:
+    """The construction of a cantilever wing box (see the module docstring)."""
+    density_kgpm3: float = 2780.0
+    cap_stress_Pa: float = 345e6
+    web_stress_Pa: float = 200e6
+    box_depth_fraction: float = 0.85
+    non_optimum_factor: float = 1.5
+    quadrature_points: int = 12
+    relief_width_fraction: float = 0.01
+
+    def __post_init__(self):
+        checks = {"density_kgpm3": (100.0, 20000.0), "cap_stress_Pa": (1e6, 5e9), "web_stress_Pa": (1e6, 5e9),
+                  "box_depth_fraction": (0.1, 1.0), "non_optimum_factor": (1.0, 5.0),
+                  "relief_width_fraction": (0.002, 0.2)}
+        for name, (lo, hi) in checks.items():
+            v = getattr(self, name)
+            if not (isinstance(v, (int, float)) and math.isfinite(v) and lo <= v <= hi):
+                raise InputError(f"wing_structure.{name}", f"a number in [{lo:g}, {hi:g}], got {v!r}")
+        if not (isinstance(self.quadrature_points, int) and 4 <= self.quadrature_points <= 64):
+            raise InputError("wing_structure.quadrature_points", f"an integer in [4, 64], got "
+                                                                  f"{self.quadrature_points!r}")
+
+
+def elliptic_shear_moment(u, half_lift, semispan):
+    """Shear force and bending moment (S1, S2) at ``u = y/s`` of a half wing carrying
+    ``half_lift`` (N) elliptically over ``semispan`` (m)."""
+    l0 = 4.0 * half_lift / (math.pi * semispan)
+    root = np.sqrt(1.0 - u * u)
+    tail = math.pi / 4 - (u * root + np.arcsin(u)) / 2     # int_u^1 sqrt(1-t^2) dt
+    return l0 * semispan * tail, l0 * semispan ** 2 * (root ** 3 / 3.0 - u * tail)
+
+
+def _smooth_abs(x, eps):
+    return ca.sqrt(x * x + eps * eps) if isinstance(x, (ca.MX, ca.SX)) else np.sqrt(x * x + eps * eps)
+
+
+def bending_material_kg(ws: WingStructure, area_m2, span_m, taper, thickness_to_chord, load_factor,
+                        design_lift_N, point_masses=()):
+    """Bending and shear material of the whole wing (S3, times the non-optimum factor), kg.
+
+    ``point_masses``: ``(mass_kg, y_m)`` per half wing (numbers or CasADi), the masses
+    that relieve the bending.  Every other input is a number or a CasADi expression."""
+    s = span_m / 2.0
+    c_root = 2.0 * area_m2 / (span_m * (1.0 + taper))
+    x, w = np.polynomial.legendre.leggauss(ws.quadrature_points)
+    u_all, w_all = 0.5 * (x + 1.0), 0.5 * w
+    V_root, M_root = elliptic_shear_moment(0.0, 0.5 * load_factor * design_lift_N, s)
+    width = ws.relief_width_fraction * s
+    total = 0.0
+    for u, wq in zip(u_all, w_all):
+        V, M = elliptic_shear_moment(u, 0.5 * load_factor * design_lift_N, s)
+        for m_i, y_i in point_masses:
+            z = (y_i - u * s) / width
+            # softplus(z) w -> max(0, y_i - y); logistic(z) -> the step (the shear's jump)
+            M = M - load_factor * G0 * m_i * width * _softplus(z)
+            V = V - load_factor * G0 * m_i * _logistic(z)
+        h = ws.box_depth_fraction * thickness_to_chord * c_root * (1.0 - (1.0 - taper) * u)
+        integrand = (2.0 * _smooth_abs(M, 1e-6 * M_root) / (ws.cap_stress_Pa * h)
+                     + _smooth_abs(V, 1e-6 * V_root) / ws.web_stress_Pa)
+        total = total + wq * integrand
+    return ws.non_optimum_factor * 2.0 * ws.density_kgpm3 * s * total
+
+
+def _softplus(z):
+    # log(1 + e^z); |z| <= 1/relief_width_fraction <= 500 here (0 <= y_i, y <= s), no overflow
+    lib = ca if isinstance(z, (ca.MX, ca.SX)) else np
+    return lib.log(1.0 + lib.exp(z))
+
+
+def _logistic(z):
+    lib = ca if isinstance(z, (ca.MX, ca.SX)) else np
+    return 0.5 * (1.0 + lib.tanh(0.5 * z))

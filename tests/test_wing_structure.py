@@ -1,0 +1,113 @@
+"""The wing's bending material (issue 16 item 4): span, taper, thickness and lift share
+move the wing mass through the physics, and the sizing lift is the wing's own."""
+import math
+import sys
+from dataclasses import replace
+from pathlib import Path
+
+import casadi as ca
+import numpy as np
+import pytest
+
+from mdo.core.errors import InputError
+from mdo.vehicle.catalog import ga2p, ttw
+from mdo.vehicle.mass import MassDesign, mass_table_markdown, mass_terms, solve_togw
+from mdo.vehicle.wing_structure import WingStructure, bending_material_kg, elliptic_shear_moment
+
+sys.path.insert(0, str(Path(__file__).parent))
+from test_vehicle_definition import _built, _segments  # noqa: E402
+
+CAPS_ONLY = WingStructure(non_optimum_factor=1.0, web_stress_Pa=5e9, quadrature_points=24)  # webs ~0.1-0.3 %
+
+
+def test_elliptic_loads_match_the_integrated_load():
+    s, L_half = 5.0, 1000.0
+    V0, M0 = elliptic_shear_moment(0.0, L_half, s)
+    assert V0 == pytest.approx(L_half, rel=1e-12)
+    assert M0 == pytest.approx(4 * L_half * s / (3 * math.pi), rel=1e-12)   # centroid 4s/(3 pi)
+    # M(u) is the integral of V from u to the tip (dM/dy = -V)
+    u = np.linspace(0.0, 1.0, 4001)
+    V, M = elliptic_shear_moment(u, L_half, s)
+    M_int = np.array([np.trapezoid(V[i:], u[i:] * s) for i in (0, 1000, 2000, 3000)])
+    assert np.allclose(M_int, M[[0, 1000, 2000, 3000]], rtol=2e-4)
+
+
+def test_caps_grow_like_span_cubed_at_constant_area_and_linearly_with_lift():
+    m1 = bending_material_kg(CAPS_ONLY, 14.76, 11.4, 1.0, 0.12, 5.7, 18000.0)
+    m16 = bending_material_kg(CAPS_ONLY, 14.76, 1.6 * 11.4, 1.0, 0.12, 5.7, 18000.0)
+    assert m16 / m1 == pytest.approx(1.6 ** 3, rel=0.01)
+    assert bending_material_kg(CAPS_ONLY, 14.76, 11.4, 1.0, 0.12, 5.7, 9000.0) == pytest.approx(0.5 * m1, rel=1e-9)
+    # thicker box, less material (1/(t/c)); lower taper: a deeper root where the moment is
+    assert bending_material_kg(CAPS_ONLY, 14.76, 11.4, 1.0, 0.15, 5.7, 18000.0) == pytest.approx(m1 * 0.8, rel=3e-3)
+    assert bending_material_kg(CAPS_ONLY, 14.76, 11.4, 0.4, 0.12, 5.7, 18000.0) < m1
+
+
+def test_rectangular_wing_caps_against_the_closed_form():
+    # rectangular box (constant depth h): m = 2 halves x rho x 2 caps x int_0^s M dy / (sigma h)
+    S, b, tc, n, F = 10.0, 10.0, 0.12, 5.7, 20000.0
+    s, c = b / 2, S / b
+    h = CAPS_ONLY.box_depth_fraction * tc * c
+    L_half = 0.5 * n * F
+    y = np.linspace(0, s, 20001)
+    _, M = elliptic_shear_moment(y / s, L_half, s)
+    expect = 2 * CAPS_ONLY.density_kgpm3 * 2 * np.trapezoid(M, y) / (CAPS_ONLY.cap_stress_Pa * h)
+    assert bending_material_kg(CAPS_ONLY, S, b, 1.0, tc, n, F) == pytest.approx(expect, rel=5e-3)   # + the webs at 5 GPa, 0.2 %
+
+
+def test_rotor_masses_relieve_the_bending_smoothly():
+    ws = WingStructure()
+    bare = bending_material_kg(ws, 14.76, 11.4, 0.6, 0.12, 5.7, 18000.0)
+    outboard = bending_material_kg(ws, 14.76, 11.4, 0.6, 0.12, 5.7, 18000.0, [(60.0, 4.0)])
+    inboard = bending_material_kg(ws, 14.76, 11.4, 0.6, 0.12, 5.7, 18000.0, [(60.0, 1.0)])
+    assert outboard < inboard < bare
+    y = ca.MX.sym("y")
+    f = ca.Function("f", [y], [ca.jacobian(bending_material_kg(ws, 14.76, 11.4, 0.6, 0.12, 5.7, 18000.0,
+                                                               [(60.0, y)]), y)])
+    slopes = np.array([float(f(v)) for v in np.linspace(0.2, 5.6, 55)])
+    assert np.all(np.isfinite(slopes)) and np.all(slopes < 0)   # further out, more relief, everywhere
+
+
+def test_baseline_mass_is_raymers_and_the_lift_share_moves_it():
+    cfg = ttw()
+    bend = replace(cfg, wing_structure=WingStructure())
+    W0 = solve_togw(cfg)
+    assert solve_togw(bend) == pytest.approx(W0, rel=1e-9)      # the level is the regression's
+    d = MassDesign.baseline(bend)
+    front, rear = (w.name for w in bend.lifting_wings)
+    share = {front: 0.84, rear: 0.16}
+    d.wing_design_lift_N = {k: v * 9.80665 * W0 for k, v in share.items()}
+    t = mass_terms(bend, W0, d)
+    t0 = mass_terms(cfg, W0)
+    assert t[f"wing: {front}"] > t0[f"wing: {front}"] > t[f"wing: {rear}"]
+    # stretching the wing that carries more lift costs more
+    def span_slope(name):
+        d2 = MassDesign(dict(d.wing_span_m), dict(d.wing_taper), d.rotor_radius_m,
+                        wing_design_lift_N=d.wing_design_lift_N)
+        d2.wing_span_m[name] *= 1.1
+        return float(mass_terms(bend, W0, d2)[f"wing: {name}"] - t[f"wing: {name}"])
+    assert span_slope(front) > 2.0 * span_slope(rear)
+    assert "bending material" in mass_table_markdown(bend, d)
+
+
+def test_a_structure_heavier_than_the_regression_is_refused():
+    with pytest.raises(InputError, match="wing_structure"):
+        solve_togw(replace(ga2p(), wing_structure=WingStructure(cap_stress_Pa=20e6)))
+    with pytest.raises(InputError, match="wing_structure.box_depth_fraction"):
+        WingStructure(box_depth_fraction=1.5)
+
+
+def test_the_design_lift_is_sized_by_the_wings_lift_and_holds_the_span():
+    """A short GA-2P climb and cruise, wing free: with the bending material the span stops
+    inside its box (with Raymer's AR^0.6 alone it runs to 1.6x), and the design lift is the
+    largest lift of the wing over the nodes."""
+    cfg = replace(ga2p(), wing_structure=WingStructure())
+    p, v, m = _built(cfg, _segments())
+    assert "main_wing design lift" in p.groups
+    s = p.solve(verbose=False)
+    assert s.status == "Solve_Succeeded"
+    span = s.value(v.design["wings"]["main_wing"]["span"])
+    upper = p.variables["main_wing.span"].upper
+    assert float(np.ravel(span)[0]) < 0.95 * float(np.ravel(upper)[0])
+    # the sizing is active: at the node of the largest lift, the wing's lift is its design lift
+    r = np.asarray(s.value(p.groups["main_wing design lift"].residual)).ravel()
+    assert -1e-5 < r.max() < 1e-6
