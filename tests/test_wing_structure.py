@@ -111,3 +111,20 @@ def test_the_design_lift_is_sized_by_the_wings_lift_and_holds_the_span():
     # the sizing is active: at the node of the largest lift, the wing's lift is its design lift
     r = np.asarray(s.value(p.groups["main_wing design lift"].residual)).ravel()
     assert -1e-5 < r.max() < 1e-6
+
+
+def test_tilt_wing_sizes_on_wing_borne_nodes_and_checks_the_limit_load_elsewhere():
+    from mdo.core import units as u
+    from mdo.mission import Mission
+    from mdo.mission.profiles import evtol_segments
+    from mdo.nlp import Problem
+    from mdo.vehicle.aircraft import Aircraft
+    p = Problem("ttw_small")
+    v = Aircraft(replace(ttw(), wing_structure=WingStructure()), n_stations=6, n_azimuth=2, wing_strips=6)
+    m = Mission(v, evtol_segments(nodes=3), nodes=3).build(p)
+    p.minimize(m.energy_used_J / u.KWH, unit="kWh")
+    for wing in ("main_wing", "tandem_wing"):
+        sized, limit = p.groups[f"{wing} design lift"].labels, p.groups[f"{wing} limit load"].labels
+        assert any(lab.startswith("CR") for lab in sized)
+        assert not any(lab.startswith(("VT", "AT", "VC")) for lab in sized)
+        assert any(lab.startswith("AT") for lab in limit) and not any(lab.startswith("CR") for lab in limit)

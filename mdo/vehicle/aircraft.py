@@ -616,7 +616,7 @@ class Aircraft:
         residuals += trim_residuals(self, nodes, aero, rot, env)
         if self.limits_on:
             residuals += operating_limits(self, nodes, rot, po, aero, env)
-        residuals += wing_design_lift_rows(self, aero, env)
+        residuals += wing_design_lift_rows(self, nodes, aero, env)
         out = node_outputs(self, nodes, rot, aero, po, env)
         dist = {"strip_cl": Output(aero["vlm"]["cl"], "-", "section lift coefficient of each lattice strip "
                                                          "(with the wakes)")}

@@ -72,15 +72,27 @@ def operating_limits(ac, nodes, rot, po, aero, env) -> list:
     return out
 
 
-def wing_design_lift_rows(ac, aero, env) -> list:
-    """Sizing of each wing's structure (a ``WingStructure``): its lift at every node at most
-    its design lift (the bending material is sized for ``n_ult`` times that)."""
+def wing_design_lift_rows(ac, nodes, aero, env) -> list:
+    """Sizing of each wing's structure (a ``WingStructure``): at every wing-borne node (its
+    stall margin on) the wing's lift is at most its design lift, which the bending material
+    carries ``n_ult`` times; at the other nodes (the tilt-wing's transitions, whose maneuver
+    envelope is not modelled) at most the limit load, ``n_ult / 1.5`` times it."""
+    K = env["K"]
+    margin = _num(nodes.parameters.get("stall_margin_cl", _row(ac.stall_margin_cl, K))).ravel() * np.ones(K)
+    borne, other = np.flatnonzero(margin >= 0.0), np.flatnonzero(margin < 0.0)
+    n_limit = ac.config.ultimate_load_factor / 1.5
     names = [s_.name for s_ in ac.vlm.surfaces]
+    scale = ac.togw_baseline_kg * 9.80665
     out = []
     for name, F in getattr(ac, "wing_design_lift", {}).items():
         L = surface_lift_N(ac.vlm, aero["vlm"], names.index(name), env["rho"], env["V"])
-        out.append(ResidualGroup(f"{name} design lift", L - F, kind="<=", scale=ac.togw_baseline_kg * 9.80665,
-                                 unit="N", row_labels=[f"{name} lift - design lift"]))
+        if borne.size:
+            out.append(ResidualGroup(f"{name} design lift", L[:, list(borne)] - F, kind="<=", scale=scale,
+                                     unit="N", row_labels=[f"{name} lift - design lift"], columns=borne))
+        if other.size:
+            out.append(ResidualGroup(f"{name} limit load", L[:, list(other)] - n_limit * F, kind="<=",
+                                     scale=scale, unit="N", row_labels=[f"{name} lift - limit load"],
+                                     columns=other))
     return out
 
 

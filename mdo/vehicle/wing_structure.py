@@ -9,7 +9,8 @@ and App. C: the material that resists the root bending moment is the design-sens
 part of a wing's weight):
 
 * **Load.**  The wing's design lift ``F`` (N, 1 g; sized: at least the wing's lift at every
-  node, ``Aircraft``), times the ultimate load factor, spread elliptically over the span
+  wing-borne node, ``aircraft_nodes.wing_design_lift_rows``), times the ultimate load factor
+  (the maneuver and gust envelope of the class), spread elliptically over the span
   (the ideal loading the weight estimates assume).  Per half wing, with ``u = y/s`` and
   ``l0 = 4 (n F / 2) / (pi s)``::
 
