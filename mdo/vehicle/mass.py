@@ -37,7 +37,6 @@ import numpy as np
 
 from ..core import units as u
 from ..core.errors import InputError
-from ..core.smooth import xp
 from .config import VehicleConfig, WingConfig, replace
 from .wing_structure import G0, bending_material_kg
 
@@ -98,7 +97,6 @@ def _q_cruise_psf(cfg: VehicleConfig) -> float:
 
 def _wing_lb(w: WingConfig, span_m, taper, nz_wdg_lb, q_psf):
     """Raymer Eq. 15.46 (GA wing)."""
-    lib = xp(span_m, taper)
     S_ft2 = w.area_m2 / u.FT ** 2
     AR = span_m ** 2 / w.area_m2
     cos_sw = np.cos(np.radians(w.sweep_quarter_chord_deg))
