@@ -63,8 +63,8 @@ PROPS = {"10x7": apc_common.Prop("10x7", "APC 10x7", 10.0, 7.0),
          "19x12": apc_common.Prop("19x12", "APC 19x12", 19.0, 12.0)}
 # Tolerances on mean |error| (J <= 0.7 over all runs; static) -- measured values in
 # results/validation/apc*_summary.md; the targets are 10 % (J <= 0.7) and 8 % (static).
-TOL = {"10x7": {"all": (0.05, 0.05), "static": (0.10, 0.08)},
-       "19x12": {"all": (0.10, 0.105), "static": (0.06, 0.10)}}
+TOL = {"10x7": {"all": (0.05, 0.05), "static": (0.08, 0.08)},
+       "19x12": {"all": (0.10, 0.105), "static": (0.08, 0.08)}}
 
 
 @pytest.mark.parametrize("key", ["10x7", "19x12"])

@@ -43,7 +43,11 @@ def test_stall_delay_only_past_the_linear_range(model):
     a = np.radians(np.array([-2.0, 0.0, 2.0, 18.0, 25.0, 60.0]))
     cl2, cd2 = base.cl(a, 1e5), base.cd(a, 1e5)
     cl3, cd3 = aug.coefficients(a, 1e5, 0.0, 0.3, 0.4, 0.9)
-    assert np.allclose(cd3, cd2)                               # drag stays 2-D
+    # the lift increment is a normal force: its drag is dcl tan(alpha) (Bak et al. 2006)
+    assert np.allclose(cd3, cd2 + (cl3 - cl2) * np.tan(a), atol=1e-12)
+    assert np.all(cd3[3:5] > cd2[3:5] + 0.01)
+    cl2d, cd2d = RotationalAugmentation(base, model, drag="2d").coefficients(a, 1e5, 0.0, 0.3, 0.4, 0.9)
+    assert np.allclose(cd2d, cd2) and np.allclose(cl2d, cl3)   # drag="2d": drag stays 2-D
     assert np.all(np.abs(cl3[:3] - cl2[:3]) < 0.01)            # attached: unchanged
     assert cl3[3] > cl2[3] + 0.05 and cl3[4] > cl2[4] + 0.05   # stall delayed at c/r = 0.4
     assert abs(cl3[5] - cl2[5]) < 0.02                         # deep stall: back to 2-D

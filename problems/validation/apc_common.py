@@ -7,7 +7,8 @@ identically (nothing is fitted per propeller):
 * sections: APC's stated practice for thin-electric props, the low-Re Eppler E63
   inboard blended into a Clark-Y-like section outboard (apcprop.com, Technical
   information / Engineering), change at mid-blade (r/R 0.5);
-* rotational augmentation (stall delay) of Du & Selig (AIAA 98-0021), see
+* rotational augmentation (stall delay) of Du & Selig (AIAA 98-0021), its lift
+  increment a normal-force increment (drag ``dcl tan(alpha)``, Bak et al. 2006), see
   ``mdo.rotor.RotationalAugmentation``;
 * blade angles referenced to the maker's quoted pitch: a collective offset makes
   the geometric pitch at 0.75 R equal the nominal pitch (10x**7**, 19x**12** in),
@@ -194,7 +195,7 @@ def write_outputs(prop: Prop, out_dir: Path = OUT_DIR, with_sensitivity: bool = 
     _figure(prop, main, t, out_dir / f"{stem}.png")
     rot = main["rotor"]
     lines = [f"# {prop.title}: BEMT vs UIUC wind-tunnel data", "",
-             f"Model: sections `{AIRFOIL}` (E63 inboard, Clark-Y outboard, Du-Selig stall delay), blade angles "
+             f"Model: sections `{AIRFOIL}` (E63 inboard, Clark-Y outboard, Du-Selig stall delay, its lift increment a normal force: dcd = dcl tan(alpha)), blade angles "
              f"referenced to the quoted {prop.pitch_in:g} in pitch at 0.75 R (collective "
              f"{math.degrees(rot.pitch_offset_rad):+.2f} deg on the UIUC table), {N_STATIONS} stations, sea level "
              f"(`problems/validation/apc_common.py`). Relative errors (model - data)/data; J <= {J_LIMIT} "
