@@ -16,9 +16,11 @@ NAMES = ["clarky", "e63", "naca0015", "naca4412", "naca63412"]
 # stated per airfoil with a small margin below the measured value.  The points that
 # miss sit at XFOIL's discontinuities (laminar-bubble bursts and negative stall,
 # where cl jumps by up to 0.6 and cd by 2-7x between two 0.25 deg points); see
-# mdo/airfoil/README.md for the numbers.
-MIN_FRACTION_CL = {"clarky": 0.96, "e63": 0.95, "naca0015": 0.97, "naca4412": 0.97, "naca63412": 0.98}
-MIN_FRACTION_CD = {"clarky": 0.94, "e63": 0.93, "naca0015": 0.98, "naca4412": 0.95, "naca63412": 0.98}
+# mdo/airfoil/README.md for the numbers.  Clark-Y at Re 5e4 and NACA 63-412 at 5e4-1e6 are
+# Ncrit 9 since 2026-12-05 (SUAVE's files there were Ncrit 5): bumpier laminar-bubble polars,
+# measured 0.950 (63-412 cl), 0.959 (63-412 cd) and 0.939 (Clark-Y cd).
+MIN_FRACTION_CL = {"clarky": 0.96, "e63": 0.95, "naca0015": 0.97, "naca4412": 0.97, "naca63412": 0.94}
+MIN_FRACTION_CD = {"clarky": 0.93, "e63": 0.93, "naca0015": 0.98, "naca4412": 0.95, "naca63412": 0.95}
 
 
 @pytest.fixture(scope="module", params=NAMES)

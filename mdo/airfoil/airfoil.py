@@ -65,6 +65,9 @@ class Airfoil:
         entry = CATALOG.get(key)
         if entry is not None and entry.shipped and "@" not in str(name):
             return _load(key)
+        shipped_ncrit = _shipped_variant(name)
+        if shipped_ncrit is not None:   # "clarky@ncrit=7": XFOIL polars at that Ncrit ship
+            return _load(shipped_ncrit[0], shipped_ncrit[1])
         return cls.from_spec(name)
 
     @classmethod
@@ -72,7 +75,9 @@ class Airfoil:
         """A generated section (``mdo.airfoil.generate``): a ``SectionSpec`` or its text form,
         e.g. ``"NACA 23012"``, ``"naca4412@ncrit=5"``, ``"clarky@xtr=0.1"`` (a shipped
         section's coordinates with another transition setting), ``"my.dat@ncrit=7"``.
-        Polars come from NeuralFoil (cached); the fit and model are the shipped ones."""
+        Polars come from NeuralFoil (cached); the fit and model are the shipped ones.  (A
+        shipped section at an Ncrit whose XFOIL polars ship, ``"clarky@ncrit=7"``, is read
+        from those by :meth:`from_name`.)"""
         from .generate import SectionSpec, parse_spec
         if not isinstance(spec, SectionSpec):
             text = str(spec)
@@ -249,12 +254,32 @@ def _load_spec(spec) -> Airfoil:
     return af
 
 
+def _shipped_variant(name: str):
+    """``(key, ncrit)`` when ``name`` is a shipped section with only ``@ncrit=N`` and XFOIL
+    polars at that Ncrit ship (``AirfoilEntry.polar_paths(ncrit)``); else None (NeuralFoil)."""
+    text = str(name)
+    if "@" not in text:
+        return None
+    geom, opts = text.split("@", 1)
+    entry = CATALOG.get(normalize(geom))
+    parts = [o.strip().lower().replace(" ", "") for o in opts.split(",") if o.strip()]
+    if entry is None or not entry.shipped or len(parts) != 1 or not parts[0].startswith("ncrit="):
+        return None
+    try:
+        ncrit = float(parts[0].split("=", 1)[1])
+    except ValueError:
+        return None
+    return (entry.key, ncrit) if entry.polar_paths(ncrit) else None
+
+
 @lru_cache(maxsize=None)
-def _load(key: str) -> Airfoil:
+def _load(key: str, ncrit: float | None = None) -> Airfoil:
     entry = CATALOG[key]
-    polars = sorted((read_polar(p) for p in entry.polar_paths()), key=lambda p: p.reynolds)
+    polars = sorted((read_polar(p) for p in entry.polar_paths(ncrit)), key=lambda p: p.reynolds)
     tc, _, camber = thickness_camber(entry.coordinate_path)
-    tables = fit_tables(key, polars, FitSettings())
-    af = Airfoil(key, entry.title, tables, tc, camber, polars)
+    name = key if ncrit is None else f"{key}_ncrit{int(round(ncrit))}"   # a valid CasADi name
+    tables = fit_tables(name, polars, FitSettings())
+    af = Airfoil(name, entry.title + ("" if ncrit is None else f" (XFOIL, Ncrit {ncrit:g})"), tables, tc, camber,
+                 polars)
     af.coordinate_path = entry.coordinate_path
     return af

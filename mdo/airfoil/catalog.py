@@ -31,8 +31,14 @@ class AirfoilEntry:
         """Coordinates and at least one polar present."""
         return self.coordinate_path.exists() and bool(self.polar_paths())
 
-    def polar_paths(self):
-        return sorted((DATA_DIR / "polars").glob(f"{self.polar_prefix}_polar_Re_*.txt"))
+    def polar_paths(self, ncrit: float | None = None):
+        """The shipped polars (XFOIL, Ncrit 9), or the shipped set at another Ncrit
+        (``<prefix>_ncrit<N>_polar_Re_*.txt``; empty where none ships)."""
+        if ncrit is None:
+            return sorted((DATA_DIR / "polars").glob(f"{self.polar_prefix}_polar_Re_*.txt"))
+        if float(ncrit) != round(float(ncrit)):
+            return []
+        return sorted((DATA_DIR / "polars").glob(f"{self.polar_prefix}_ncrit{int(round(ncrit))}_polar_Re_*.txt"))
 
 
 CATALOG = {

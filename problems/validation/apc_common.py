@@ -6,7 +6,14 @@ identically (nothing is fitted per propeller):
 
 * sections: APC's stated practice for thin-electric props, the low-Re Eppler E63
   inboard blended into a Clark-Y-like section outboard (apcprop.com, Technical
-  information / Engineering), change at mid-blade (r/R 0.5);
+  information / Engineering), change at mid-blade (r/R 0.5); both from XFOIL polars
+  (shipped, 2e4-1e6) at **Ncrit 7**, one transition setting for both propellers.  A
+  quiet tunnel is Ncrit 9 (Mack's Ncrit = -8.43 - 2.4 ln Tu: Tu 0.07 %; the UIUC tunnel
+  states Tu < 0.1 %); a rotating blade's disturbance environment is not that quiet, and
+  Ncrit 7 (Tu 0.16 %) is the one of 5/7/9 that fits both props best (the summaries'
+  uncertainty table gives all three).  Before 2026-12-05 the Clark-Y's Re 5e4 polar was
+  SUAVE's, run at Ncrit 5 while every other level was Ncrit 9: that mixed set flattened
+  the section's Reynolds dependence between 5e4 and 1e5, where these blades work;
 * rotational augmentation (stall delay) of Du & Selig (AIAA 98-0021), its lift
   increment a normal-force increment (drag ``dcl tan(alpha)``, Bak et al. 2006), see
   ``mdo.rotor.RotationalAugmentation``;
@@ -18,12 +25,11 @@ identically (nothing is fitted per propeller):
 * 20 cosine-spaced stations, Prandtl tip and hub losses, hub at the first geometry
   station, sea-level USSA76 air.
 
-The "baseline" rows reproduce the model before issue 18 (same sections, no stall
+The "baseline" rows are the model before issue 18 (the Ncrit 9 sections, no stall
 delay, tabulated blade angles) for comparison.  Sensitivities: the section's
 zero-lift angle +-1 deg (a collective -+1 deg: alpha - alpha0 is what the
-attached section sees), and the transition setting Ncrit 5 vs 9 (both sections
-regenerated with NeuralFoil at that Ncrit, ``mdo.airfoil.generate``; needs the
-optional package, otherwise the rows say so).
+attached section sees), and the transition setting Ncrit 5 or 9 instead of 7 (both
+sections' shipped XFOIL polars at that Ncrit).
 """
 from __future__ import annotations
 
@@ -38,11 +44,11 @@ from mdo.rotor import RotorGeometry, analyze
 from mdo.rotor.geometry import DATA_DIR
 
 INCH_M = 0.0254
-SECTIONS = "e63:0.5:clark_y"
+SECTIONS = "e63@ncrit=7:0.5:clarky@ncrit=7"
 STALL_DELAY = "du_selig"
 AIRFOIL = f"{SECTIONS}+{STALL_DELAY}"
-BASELINE_AIRFOIL = SECTIONS
-NCRIT_AIRFOILS = {5: "e63@ncrit=5:0.5:clarky@ncrit=5+du_selig", 9: "e63@ncrit=9:0.5:clarky@ncrit=9+du_selig"}
+BASELINE_AIRFOIL = "e63:0.5:clark_y"
+NCRIT_AIRFOILS = {5: "e63@ncrit=5:0.5:clarky@ncrit=5+du_selig", 9: "e63:0.5:clark_y+du_selig"}
 N_STATIONS = 20
 J_LIMIT = 0.7
 OUT_DIR = Path(__file__).resolve().parents[2] / "results" / "validation"
@@ -117,10 +123,7 @@ def sensitivities(prop: Prop) -> list:
         # alpha0 -> alpha0 + da0 is, in attached flow, a collective of -da0
         rows.append((f"zero-lift angle {da0:+.0f} deg", *_bias(run(prop, extra_pitch_deg=-da0))))
     for nc, af in NCRIT_AIRFOILS.items():
-        try:
-            rows.append((f"sections regenerated, Ncrit {nc} (NeuralFoil)", *_bias(run(prop, airfoil=af))))
-        except Exception as exc:   # the optional generator is missing: say so in the table
-            rows.append((f"sections regenerated, Ncrit {nc}: not available ({exc})",) + (float("nan"),) * 4)
+        rows.append((f"sections at Ncrit {nc} (XFOIL)", *_bias(run(prop, airfoil=af))))
     rows.append(("no stall delay", *_bias(run(prop, airfoil=SECTIONS))))
     rows.append(("tabulated blade angles (no pitch reference)", *_bias(run(prop, pitch_reference=False))))
     return rows
@@ -195,7 +198,7 @@ def write_outputs(prop: Prop, out_dir: Path = OUT_DIR, with_sensitivity: bool = 
     _figure(prop, main, t, out_dir / f"{stem}.png")
     rot = main["rotor"]
     lines = [f"# {prop.title}: BEMT vs UIUC wind-tunnel data", "",
-             f"Model: sections `{AIRFOIL}` (E63 inboard, Clark-Y outboard, Du-Selig stall delay, its lift increment a normal force: dcd = dcl tan(alpha)), blade angles "
+             f"Model: sections `{AIRFOIL}` (E63 inboard, Clark-Y outboard, XFOIL at Ncrit 7; Du-Selig stall delay, its lift increment a normal force: dcd = dcl tan(alpha)), blade angles "
              f"referenced to the quoted {prop.pitch_in:g} in pitch at 0.75 R (collective "
              f"{math.degrees(rot.pitch_offset_rad):+.2f} deg on the UIUC table), {N_STATIONS} stations, sea level "
              f"(`problems/validation/apc_common.py`). Relative errors (model - data)/data; J <= {J_LIMIT} "
@@ -208,7 +211,8 @@ def write_outputs(prop: Prop, out_dir: Path = OUT_DIR, with_sensitivity: bool = 
                      f"{100 * v['CP_mean']:.1f} % | {100 * v['CP_max']:.1f} % | {100 * b['CT_mean']:.1f} % | "
                      f"{100 * b['CP_mean']:.1f} % |")
     lines += ["", f"Baseline = the model before issue 18 (`{BASELINE_AIRFOIL}`, no stall delay, tabulated blade "
-                  "angles).", f"Largest BEMT residual over all points: {res.residual_max.max():.1e}."]
+                  "angles), with today's polars (the Clark-Y's Re 5e4 level at Ncrit 9 like the others; until "
+                  "2026-12-05 it was SUAVE's Ncrit 5 file).", f"Largest BEMT residual over all points: {res.residual_max.max():.1e}."]
     if with_sensitivity:
         lines += ["", "## Uncertainty: what a section choice is worth", "",
                   "Mean signed error (bias) of the model with one input changed:", "",
