@@ -86,7 +86,8 @@ class DesignBounds:
 
     These are ranges of validity of the models, not results: no bound is taken from a
     published optimum.  Span is held by what it costs (the wing weight, Raymer Eq.
-    15.46, grows with AR^0.6) and by ``Aircraft(max_span_m=...)`` when the user has a
+    15.46, grows with AR^0.6; with a ``WingStructure`` its bending material grows with
+    AR^1.5 and the wing's own lift share) and by ``Aircraft(max_span_m=...)`` when the user has a
     hangar or gate limit; taper by the stall margin of the tip strips (cl_max falls
     with the tip chord's Reynolds number) - the box 0.2-1.0 only keeps the planform
     a trapezoid.  Design speeds within -40 %/+30 % of the baseline; the design cl of
