@@ -12,7 +12,6 @@ from __future__ import annotations
 import argparse
 import json
 import statistics
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -43,16 +42,18 @@ def main(argv=None):
     rows.sort(key=lambda r: r["start"])
     ok = [r for r in rows if r["optimization_status"] == "Solve_Succeeded"]
     es = np.array([r["battery_energy_kWh"] for r in ok])
+    folders = sorted({str(Path(f).parent) for f in args.files})
     lines = [f"# Robustness: {args.title}", "",
-             f"Merged by `python tests/bench/robustness_merge.py {' '.join(sys.argv[1:] if argv is None else argv)}` "
-             f"from one-start runs of `tests/bench/robustness.py` (each file: its command and commit).", "",
+             f"Merged by `python tests/bench/robustness_merge.py` from {len(args.files)} one-start runs of "
+             f"`tests/bench/robustness.py` in {', '.join(f'`{d}/`' for d in folders)} (each report there gives its "
+             f"command and commit).", "",
              f"**{len(ok)} of {len(rows)} converged** (IPOPT Solve_Succeeded)."]
     if len(ok):
         lines.append(f"Optimized energy: min {es.min():.4f}, median {np.median(es):.4f}, max {es.max():.4f} kWh; "
                      f"spread {100 * (es.max() - es.min()) / es.min():.2f} %"
                      + (f"; committed optimum {args.committed:.4f} kWh" if args.committed else "") + ".")
         lines.append(f"Wall time per start: median {statistics.median(r['wall_s'] for r in rows):.0f} s "
-                     f"(two starts at a time on the 2 cores).")
+                     f"(two starts at a time and other jobs on the 2 cores: upper bounds).")
         groups = troughs(es, args.trough / 100.0)
         lines += ["", f"Troughs (optima within {args.trough:g} % of a neighbour):", "",
                   "| trough | starts | energy (kWh) |", "|---:|---:|---|"]
