@@ -1,7 +1,7 @@
 """Benchmark of the whole-mission optimizations (issues 10, 20): wall and CPU time,
 IPOPT iterations, NLP size, where the time goes and peak resident memory, per problem.
 
-    python tests/bench/optimize.py [ga2p ga8p ttw] [--repeats N] [--from-baseline]
+    python tests/bench/optimize.py [ga2p ga8p ttw] [--repeats N]
 
 Each repeat builds the problem, runs the baseline analysis (design frozen) and
 the optimization warm-started from it with the barrier ``mdo run`` uses there
