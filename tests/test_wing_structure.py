@@ -128,3 +128,19 @@ def test_tilt_wing_sizes_on_wing_borne_nodes_and_checks_the_limit_load_elsewhere
         assert any(lab.startswith("CR") for lab in sized)
         assert not any(lab.startswith(("VT", "AT", "VC")) for lab in sized)
         assert any(lab.startswith("AT") for lab in limit) and not any(lab.startswith("CR") for lab in limit)
+
+
+def test_a_vehicle_not_in_the_paper_with_two_rotor_groups_on_its_renamed_wing():
+    """The bending material reads the definition, not the catalog: a wing named "wing"
+    carrying wing-tip propellers and four inboard ones (``two_group_vehicle``)."""
+    from test_vehicle_definition import two_group_vehicle
+    cfg = replace(two_group_vehicle(), wing_structure=WingStructure())
+    W0 = solve_togw(replace(cfg, wing_structure=None))
+    assert solve_togw(cfg) == pytest.approx(W0, rel=1e-9)
+    # both groups relieve the wing: moving the tip propellers inboard makes it heavier
+    d = MassDesign.baseline(cfg)
+    inboard = MassDesign(d.wing_span_m, d.wing_taper, d.rotor_radius_m, rotor_span_eta={"tips": [0.5]})
+    assert mass_terms(cfg, W0, inboard)["wing: wing"] > mass_terms(cfg, W0, d)["wing: wing"]
+    p, v, m = _built(cfg, _segments(cruise_parameters={"inboard.active": 0.0}))
+    assert "wing design lift" in p.groups
+    assert all(np.isfinite(x["max_violation"]) for x in p.initial_violations())

@@ -262,14 +262,13 @@ def _shipped_variant(name: str):
         return None
     geom, opts = text.split("@", 1)
     entry = CATALOG.get(normalize(geom))
-    parts = [o.strip().lower().replace(" ", "") for o in opts.split(",") if o.strip()]
-    if entry is None or not entry.shipped or len(parts) != 1 or not parts[0].startswith("ncrit="):
+    if entry is None or not entry.shipped:
         return None
-    try:
-        ncrit = float(parts[0].split("=", 1)[1])
-    except ValueError:
+    from .generate import parse_spec
+    spec = parse_spec("naca0012@" + opts)   # the options' own parser (and its errors)
+    if spec.xtr_upper < 1.0 or spec.xtr_lower < 1.0:
         return None
-    return (entry.key, ncrit) if entry.polar_paths(ncrit) else None
+    return (entry.key, spec.ncrit) if entry.polar_paths(spec.ncrit) else None
 
 
 @lru_cache(maxsize=None)

@@ -30,6 +30,14 @@ the initial guess when present):
 
 After ``build`` the mission holds expressions for the report: ``rows`` (name ->
 1 x K), ``energy_used_J``, ``segment_energy_J``, ``final_states``.
+
+Layout of ``Mission``: kinematics (each segment's speeds, rates, durations), ``build`` and
+its named steps in the order it calls them (``_add_durations``, ``_add_body_angle``,
+``_add_unknowns``, ``_add_states``, ``_add_equations_of_motion``, ``_add_vehicle_residuals``,
+``_add_collocation``, ``_add_energy_and_outputs``), the pieces they share (guesses, defect
+matrices, masked unknowns, control continuity), and the results (``report_rows``,
+``report``).  The free-trajectory envelope lives in ``trajectory.py``, segment kinds in
+``segments.py``, Table 5's profiles in ``profiles.py``.
 """
 from __future__ import annotations
 

@@ -54,6 +54,14 @@ approach from slipstreams carrying 0.2 kW of swirl).
 
 Frames: the mission's path frame (x forward, z up); the wing and wake use body
 axes with x aft, y starboard, z up (``mdo.wing``).
+
+Layout: this file holds ``DesignBounds`` and ``Aircraft`` in sections - design (the design
+variables, mass, wing design lifts), geometry (lattice, rotors, wakes, clearance), protocol
+(unknowns, states, ``evaluate`` and its rotor and aerodynamic parts), wing tilt, guesses.
+Beside it: ``aircraft_nodes.py`` (the operating limits and ``mission.csv`` outputs at the
+nodes), ``aircraft_drag.py`` (the parasite drag build-up, flaps, drag device),
+``rotor_group.py`` (one rotor group's design and BEMT), ``balance.py`` (pitch trim),
+``guess.py`` (initial guesses), ``mass.py`` and ``wing_structure.py`` (the mass build-up).
 """
 from __future__ import annotations
 

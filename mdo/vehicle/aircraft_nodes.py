@@ -12,7 +12,7 @@ import numpy as np
 
 from ..core import units as u
 from .balance import surface_lift_N
-from .base import Output, ResidualGroup
+from .base import G0, Output, ResidualGroup
 from .stall import stall_margin_rows
 
 __all__ = ["operating_limits", "node_outputs", "wing_design_lift_rows"]
@@ -27,6 +27,12 @@ def _row(x, K=None) -> ca.DM:
 
 def _num(x) -> np.ndarray:
     return np.asarray(ca.DM(x), dtype=float)
+
+
+def _stall_margin(ac, nodes, K) -> np.ndarray:
+    """Each node's stall margin (cl): the segment's ``stall_margin_cl`` or the vehicle's;
+    negative where the segment is not wing-borne (a tilt-wing's transitions)."""
+    return _num(nodes.parameters.get("stall_margin_cl", _row(ac.stall_margin_cl, K))).ravel() * np.ones(K)
 
 
 def operating_limits(ac, nodes, rot, po, aero, env) -> list:
@@ -55,7 +61,7 @@ def operating_limits(ac, nodes, rot, po, aero, env) -> list:
         out.append(ResidualGroup("cell charge current", po["cell_current_A"] + pk.max_charge_current_A,
                                  kind=">=", scale=pk.max_charge_current_A, unit="A",
                                  row_labels=["cell current + max charge current"]))
-    margin = _num(nodes.parameters.get("stall_margin_cl", _row(ac.stall_margin_cl, K))).ravel() * np.ones(K)
+    margin = _stall_margin(ac, nodes, K)
     cols = np.flatnonzero(margin >= 0.0)
     if not ac.design_point_constraints:
         # a frozen design cannot change its span loading: its analysis holds the strips
@@ -78,11 +84,11 @@ def wing_design_lift_rows(ac, nodes, aero, env) -> list:
     carries ``n_ult`` times; at the other nodes (the tilt-wing's transitions, whose maneuver
     envelope is not modelled) at most the limit load, ``n_ult / 1.5`` times it."""
     K = env["K"]
-    margin = _num(nodes.parameters.get("stall_margin_cl", _row(ac.stall_margin_cl, K))).ravel() * np.ones(K)
+    margin = _stall_margin(ac, nodes, K)
     borne, other = np.flatnonzero(margin >= 0.0), np.flatnonzero(margin < 0.0)
     n_limit = ac.config.ultimate_load_factor / 1.5
     names = [s_.name for s_ in ac.vlm.surfaces]
-    scale = ac.togw_baseline_kg * 9.80665
+    scale = ac.togw_baseline_kg * G0
     out = []
     for name, F in getattr(ac, "wing_design_lift", {}).items():
         L = surface_lift_N(ac.vlm, aero["vlm"], names.index(name), env["rho"], env["V"])

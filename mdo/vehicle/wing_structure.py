@@ -48,10 +48,10 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-import casadi as ca
 import numpy as np
 
-from ..core.errors import InputError
+from ..core.errors import InputError, check_range
+from ..core.smooth import sigmoid, smooth_abs, softplus
 
 __all__ = ["WingStructure", "bending_material_kg", "elliptic_shear_moment"]
 
@@ -70,16 +70,13 @@ class WingStructure:
     relief_width_fraction: float = 0.01
 
     def __post_init__(self):
-        checks = {"density_kgpm3": (100.0, 20000.0), "cap_stress_Pa": (1e6, 5e9), "web_stress_Pa": (1e6, 5e9),
-                  "box_depth_fraction": (0.1, 1.0), "non_optimum_factor": (1.0, 5.0),
-                  "relief_width_fraction": (0.002, 0.2)}
-        for name, (lo, hi) in checks.items():
-            v = getattr(self, name)
-            if not (isinstance(v, (int, float)) and math.isfinite(v) and lo <= v <= hi):
-                raise InputError(f"wing_structure.{name}", f"a number in [{lo:g}, {hi:g}], got {v!r}")
-        if not (isinstance(self.quadrature_points, int) and 4 <= self.quadrature_points <= 64):
-            raise InputError("wing_structure.quadrature_points", f"an integer in [4, 64], got "
-                                                                  f"{self.quadrature_points!r}")
+        for name, (lo, hi) in {"density_kgpm3": (100.0, 20000.0), "cap_stress_Pa": (1e6, 5e9),
+                               "web_stress_Pa": (1e6, 5e9), "box_depth_fraction": (0.1, 1.0),
+                               "non_optimum_factor": (1.0, 5.0), "relief_width_fraction": (0.002, 0.2),
+                               "quadrature_points": (4, 64)}.items():
+            check_range(f"wing_structure.{name}", getattr(self, name), lo, hi)
+        if not isinstance(self.quadrature_points, int):
+            raise InputError("wing_structure.quadrature_points", f"an integer, got {self.quadrature_points!r}")
 
 
 def elliptic_shear_moment(u, half_lift, semispan):
@@ -89,10 +86,6 @@ def elliptic_shear_moment(u, half_lift, semispan):
     root = np.sqrt(1.0 - u * u)
     tail = math.pi / 4 - (u * root + np.arcsin(u)) / 2     # int_u^1 sqrt(1-t^2) dt
     return l0 * semispan * tail, l0 * semispan ** 2 * (root ** 3 / 3.0 - u * tail)
-
-
-def _smooth_abs(x, eps):
-    return ca.sqrt(x * x + eps * eps) if isinstance(x, (ca.MX, ca.SX)) else np.sqrt(x * x + eps * eps)
 
 
 def bending_material_kg(ws: WingStructure, area_m2, span_m, taper, thickness_to_chord, load_factor,
@@ -111,23 +104,11 @@ def bending_material_kg(ws: WingStructure, area_m2, span_m, taper, thickness_to_
     for u, wq in zip(u_all, w_all):
         V, M = elliptic_shear_moment(u, 0.5 * load_factor * design_lift_N, s)
         for m_i, y_i in point_masses:
-            z = (y_i - u * s) / width
-            # softplus(z) w -> max(0, y_i - y); logistic(z) -> the step (the shear's jump)
-            M = M - load_factor * G0 * m_i * width * _softplus(z)
-            V = V - load_factor * G0 * m_i * _logistic(z)
+            # softplus -> max(0, y_i - y) (the relieving moment's arm); sigmoid -> the shear's step
+            M = M - load_factor * G0 * m_i * softplus(y_i - u * s, width)
+            V = V - load_factor * G0 * m_i * sigmoid(y_i - u * s, width)
         h = ws.box_depth_fraction * thickness_to_chord * c_root * (1.0 - (1.0 - taper) * u)
-        integrand = (2.0 * _smooth_abs(M, 1e-6 * M_root) / (ws.cap_stress_Pa * h)
-                     + _smooth_abs(V, 1e-6 * V_root) / ws.web_stress_Pa)
+        integrand = (2.0 * smooth_abs(M, 1e-6 * M_root) / (ws.cap_stress_Pa * h)
+                     + smooth_abs(V, 1e-6 * V_root) / ws.web_stress_Pa)
         total = total + wq * integrand
     return ws.non_optimum_factor * 2.0 * ws.density_kgpm3 * s * total
-
-
-def _softplus(z):
-    # log(1 + e^z); |z| <= 1/relief_width_fraction <= 500 here (0 <= y_i, y <= s), no overflow
-    lib = ca if isinstance(z, (ca.MX, ca.SX)) else np
-    return lib.log(1.0 + lib.exp(z))
-
-
-def _logistic(z):
-    lib = ca if isinstance(z, (ca.MX, ca.SX)) else np
-    return 0.5 * (1.0 + lib.tanh(0.5 * z))

@@ -39,6 +39,13 @@ added to CDi.
 
 Reference quantities: ``S_ref, c_ref, b_ref`` (default: area, MAC and span of
 the first surface, symbolic if the design is), ``r_ref`` the moment reference.
+
+Layout of ``VLM``: the lattice's geometry is built once in named steps
+(``_build_halves`` -> ``_add_filaments``/``_add_horseshoes``/``_add_trefftz_traces``/
+``_add_unknown_panels`` -> ``_assemble_geometry``), then the matrices that depend on the
+design only (``_influence_matrix``, ``_trefftz_matrix``, ``_bound_velocity_matrices``), then
+the per-operating-point public API (``solve`` -> ``loads``) and small broadcasting helpers.
+The panel geometry itself is in ``lattice.py``, the filament kernels in ``kernels.py``.
 """
 from __future__ import annotations
 
