@@ -62,7 +62,7 @@ too; ``results/ttw_free/`` and its ``make_optimum.py``, which also frees chosen 
 ``min_climb_gradient_pct`` (8.3: 14 CFR 23.65's take-off climb gradient on the freed climbs; a
 powered-lift vehicle's designer may state another rule), ``max_block_time_min`` (none; with a
 free trajectory, the mission duration limit), ``max_span_m``
-(none: each wing's span within 0.6-1.6x its baseline, ``DesignBounds``; a vertiport's or hangar's
+(none: each wing's span within 0.6-3.0x its baseline, ``DesignBounds``; a vertiport's or hangar's
 limit on both wings' span when given),
 ``tol`` (IPOPT's tolerance, 1e-4 here, 1e-6 for the GA problems: at the TTW optimum the
 dual infeasibility stalls at a noise floor of 1e-5 to 3e-4 while the objective holds

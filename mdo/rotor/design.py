@@ -374,7 +374,7 @@ def adkins_liebeck_implicit(sec, n_stations: int = 20, *, target: str = "thrust"
     function theorem (``dz/dp = -R_z^-1 R_p``), so the design is exact at every
     evaluation and an NLP needs no blade unknowns.  Measured against the damped
     numeric ``adkins_liebeck`` over the corners of the aircraft's design boxes
-    (thrust 0.3-3x, speed 0.6-1.3x, radius 0.5-1.6x, cl 0.4-1.0 (the design-cl box then); GA-2P, GA-8P, TTW,
+    (thrust 0.3-3x, speed 0.6-1.3x (the design-speed box then), radius 0.5-1.6x, cl 0.4-1.0 (the design-cl box then); GA-2P, GA-8P, TTW,
     81 points each): the same blades to 3e-12, and Newton fails only where the
     damped solve fails too (an unreachable design; the evaluation then raises, which
     IPOPT treats as a rejected trial step).  Why: the 17 blade unknowns were dense

@@ -96,18 +96,22 @@ class DesignBounds:
     published optimum.  Span is held by what it costs (the wing weight, Raymer Eq.
     15.46, grows with AR^0.6; with a ``WingStructure`` its bending material grows with
     AR^1.5 and the wing's own lift share) and by ``Aircraft(max_span_m=...)`` when the user has a
-    hangar or gate limit; taper by the stall margin of the tip strips (cl_max falls
-    with the tip chord's Reynolds number) - the box 0.2-1.0 only keeps the planform
-    a trapezoid.  Design speeds within -40 %/+30 % of the baseline; the design cl of
+    hangar or gate limit; the box 0.6-3.0 x the baseline span is far outside every
+    committed optimum (the TTW's front wing, the widest, settles at 2.07 x).  Taper by the
+    stall margin of the tip strips (cl_max falls with the tip chord's Reynolds number) -
+    the box 0.2-1.0 keeps the planform a trapezoid with a tip chord the lattice and the
+    section data can carry; a tilt-wing, whose wing never flies slowly, can sit on it.
+    Design speeds 0.05-2.0 x the baseline: the Adkins-Liebeck design is valid down to
+    V = 0 (a hover design), so the box only keeps the variable's scale; the design cl of
     the blade sections by the design point's stall limit at each station's Reynolds
     number (``design_cl_stall_rows``, the vehicle's stall margin) - the box 0.2-1.5
     is the range of the Adkins-Liebeck design.
     """
     design_thrust: tuple = (0.3, 3.0)
-    design_speed: tuple = (0.6, 1.3)
+    design_speed: tuple = (0.05, 2.0)
     tip_radius: tuple = (0.5, 1.6)
     design_cl: tuple = (0.2, 1.5)          # absolute; held by stall at the design stations' Re
-    span: tuple = (0.6, 1.6)
+    span: tuple = (0.6, 3.0)
     taper: tuple = (0.2, 1.0)              # absolute
     twist_deg: tuple = (-8.0, 8.0)         # absolute
     span_eta: tuple = (0.0, 1.0)           # absolute (fraction of the semispan)
