@@ -180,7 +180,36 @@ def bemt_numeric(gm, omega, v_ax, v_ip, h, pitch, n_azimuth=1):
               "a_mps": atm["speed_of_sound_mps"], "spin": np.ones(K)}
     return analyze_inputs(gm.section, inputs, gm.n_stations, n_azimuth)
 
+# ``mdo run`` builds a problem twice (the baseline with its design frozen, then the
+# optimization): the same rotor-speed guesses, 2-3 s of numeric BEMT per build, are kept
+# here for the second build.  The key holds the section object itself (the airfoil cache
+# shares it between builds) and every number the result depends on.
+_OMEGA_CACHE: dict = {}
+_OMEGA_CACHE_SIZE = 32
+
+
+def _omega_key(gm, arrays, scalars):
+    g, blade = gm.config, gm.baseline_blade()
+    nums = [np.asarray(a, float).tobytes() for a in
+            (*arrays, blade["chord_m"], blade["twist_rad"])]
+    return (gm.section, gm.n_stations, g.radius_m, g.hub_fraction, g.blades, float(gm.omega_design),
+            *scalars, *nums)
+
+
 def omega_for_thrust(gm, T1, v_ax, v_ip, h, pitch, iterations=40, n_azimuth=1, rtol=1e-10):
+    """Rotor speed giving thrust ``T1`` per rotor at each node (see ``_omega_for_thrust``;
+    a repeated call with the same rotor and conditions returns the stored result)."""
+    key = _omega_key(gm, (T1, v_ax, v_ip, h, pitch), (iterations, n_azimuth, rtol))
+    hit = _OMEGA_CACHE.get(key)
+    if hit is None:
+        hit = _omega_for_thrust(gm, T1, v_ax, v_ip, h, pitch, iterations, n_azimuth, rtol)
+        if len(_OMEGA_CACHE) >= _OMEGA_CACHE_SIZE:
+            _OMEGA_CACHE.pop(next(iter(_OMEGA_CACHE)))
+        _OMEGA_CACHE[key] = hit
+    return hit.copy()
+
+
+def _omega_for_thrust(gm, T1, v_ax, v_ip, h, pitch, iterations=40, n_azimuth=1, rtol=1e-10):
     """Rotor speed giving thrust ``T1`` per rotor at each node: a scan for the
     lowest speed whose thrust reaches T1 (thrust need not be monotonic in speed
     for a blade far from its design inflow), then the Illinois variant of regula
