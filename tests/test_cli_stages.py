@@ -83,7 +83,7 @@ def test_a_failed_monotone_optimization_is_retried_with_the_adaptive_barrier(tmp
     code = cli.main(["run", str(POLAR), "-o", "design_wing_area=true", "--out", str(tmp_path / "m"), "--quiet"])
     assert code == 0
     mono = _summary(tmp_path / "m")
-    assert mono["barrier"] == {"mu_strategy": "monotone", "mu_init": 0.01}
+    assert mono["barrier"] == {"mu_strategy": "monotone", "mu_init": ipopt.FROM_BASELINE_OPTIONS["mu_init"]}
     assert abs(mono["battery_energy_kWh"] - opt["battery_energy_kWh"]) < 1e-4 * mono["battery_energy_kWh"]
 
 
