@@ -25,7 +25,7 @@ FRAGILE = []   # Opti objects whose solve ended so: kept alive until os._exit
 
 
 # The optimization started from its converged baseline (mdo run's stage 2): a monotone
-# barrier from mu = 1e-2 instead of IPOPT's adaptive mu.  Measured 2026-12-02 on the GA
+# barrier instead of IPOPT's adaptive mu.  Measured 2026-12-02 on the GA
 # family: the adaptive rule's free mode dropped mu to 1e-9.5 with the iterate still
 # 0.1 infeasible and took steps of |d| 20-30 that left the feasible region for good
 # (GA-8P's layout and the 12-propeller member: "local infeasibility" / diverged), while
