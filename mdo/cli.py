@@ -187,7 +187,8 @@ def _run_stages(args, options, folder, ws_data, progress) -> int:
         if getattr(args, "_relaxed", None) is not None:
             load_warm_start(baseline, args._relaxed, partial=True)
         what = "stage 1 of 2: baseline analysis, design frozen"
-        code, sol = _solve_stage(baseline, folder.stage / "analysis", args, what, progress)
+        # its figures are drawn in a child process while stage 2 builds and solves
+        code, sol = _solve_stage(baseline, folder.stage / "analysis", args, what, progress, figures="background")
         del baseline
         if code != 0:
             where = folder.commit(False, sol.status)
@@ -274,8 +275,9 @@ def _relaxed_start(args, options, analysis_problem, folder, progress):
     return None
 
 
-def _solve_stage(problem, stage_dir, args, what, progress) -> tuple:
-    """Solve one stage into ``stage_dir``; (exit code, Solution)."""
+def _solve_stage(problem, stage_dir, args, what, progress, figures: str = "now") -> tuple:
+    """Solve one stage into ``stage_dir``; (exit code, Solution).  ``figures``: as
+    ``mdo.nlp.run.solve_into``'s."""
     from .nlp.problem import INTERRUPT_STATUS
     from .nlp.run import solve_into
 
@@ -283,7 +285,7 @@ def _solve_stage(problem, stage_dir, args, what, progress) -> tuple:
     progress(f"{problem.name} ({what}): {size['variables']} variables, {size['constraints']} constraints",
              always=True)
     sol = solve_into(problem, stage_dir, max_iter=args.max_iter, verbose=not args.quiet,
-                     solve_options={"hessian": args.hessian}, progress=progress)
+                     solve_options={"hessian": args.hessian}, progress=progress, figures=figures)
     print(f"\nmdo: {problem.name}: {sol.status} after {sol.iterations} iterations, "
           f"{sol.wall_time_s:.1f} s; {sol.objective_name} = {sol.objective:.6g} {sol.objective_unit}")
     for k, v in sol.summary_values().items():

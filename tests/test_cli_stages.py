@@ -154,3 +154,26 @@ def test_an_optimization_starts_from_a_given_baseline_folder(tmp_path, capsys):
                          "--quiet", *extra])
         assert code == 2 and text in capsys.readouterr().err
         assert not (tmp_path / "x").exists()
+
+
+def test_the_baselines_figures_are_drawn_during_stage_2_and_waited_for(tmp_path, monkeypatch):
+    """Stage 1's figures are drawn by a forked child while stage 2 runs; the run folder is
+    moved into place only after the child ended, with the same files as drawn in process."""
+    from mdo import cli
+    from mdo.nlp import run as run_mod
+
+    forked = []
+    orig = run_mod._fork_figures
+    monkeypatch.setattr(run_mod, "_fork_figures", lambda *a: forked.append(orig(*a)) or forked[-1])
+    out = tmp_path / "bg"
+    assert cli.main(["run", str(POLAR), "-o", "design_wing_area=true", "--out", str(out), "--quiet"]) == 0
+    assert forked == [True] and run_mod._BACKGROUND == []          # one child, and it was waited for
+    monkeypatch.setenv("MDO_FIGURES_IN_PROCESS", "1")
+    ref = tmp_path / "fg"
+    assert cli.main(["run", str(POLAR), "-o", "design_wing_area=true", "--out", str(ref), "--quiet"]) == 0
+    assert forked == [True, False]
+    names = sorted(p.name for p in (ref / "analysis").iterdir())
+    assert "report.html" in names and any(n.endswith(".png") for n in names)
+    assert sorted(p.name for p in (out / "analysis").iterdir()) == names
+    for p in (out / "analysis").iterdir():
+        assert p.stat().st_size > 0

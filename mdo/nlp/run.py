@@ -28,6 +28,7 @@ import inspect
 import json
 import os
 import shutil
+import signal
 import sys
 import tempfile
 import time
@@ -268,6 +269,7 @@ class RunFolder:
     # ------------------------------------------------------------ close
     def commit(self, success: bool, status: str = "") -> Path:
         """Move the finished run into place; returns where it now is."""
+        wait_for_figures()
         try:
             (self.stage / "INCOMPLETE.txt").unlink()
             write_atomic(self.stage / RUN_MARKER, json.dumps(
@@ -292,6 +294,7 @@ class RunFolder:
 
     def abort(self):
         """Nothing happened: remove the staging folder, the parents made, the lock."""
+        wait_for_figures()
         if self.stage is not None:
             shutil.rmtree(self.stage, ignore_errors=True)
             self.stage = None
@@ -303,6 +306,7 @@ class RunFolder:
 
     def keep_incomplete(self):
         """A failure while writing: leave the staging folder (it says it is incomplete)."""
+        wait_for_figures()
         self._release()
 
 
@@ -315,19 +319,46 @@ def _free_name(out: Path, tag: str) -> Path:
     return cand
 
 
-def solve_into(problem: Problem, folder, *, max_iter: int | None = None, verbose: bool = True,
-               solve_options: dict | None = None, progress=None) -> Solution:
-    """Solve ``problem`` and write its files into ``folder`` (no folder management: a
-    staging folder of a ``RunFolder``).  An ``OSError`` while writing the results is
-    raised as ``ResultWriteError`` (exit 1: the solve happened)."""
-    folder = Path(folder)
-    folder.mkdir(parents=True, exist_ok=True)
-    solution = problem.solve(log_path=folder / "ipopt.log", max_iter=max_iter, verbose=verbose,
-                             progress=progress, **(solve_options or {}))
-    try:
-        solution.save(folder)
-    except OSError as exc:
-        raise ResultWriteError(fs_error(exc, "writing the results into", folder), solution) from exc
+# Figures drawn in a forked child while the parent goes on (``solve_into(...,
+# figures="background")``: ``mdo run`` draws the baseline's figures during stage 2, on the
+# second core; 2-3 s of matplotlib per folder).  Every RunFolder waits for them before it
+# moves, keeps or removes its staging folder, so no figure is written into a moved folder.
+_BACKGROUND: list = []
+
+
+def wait_for_figures() -> None:
+    """Wait for the figure children of this process (``solve_into``'s background mode)."""
+    while _BACKGROUND:
+        pid = _BACKGROUND.pop()
+        with contextlib.suppress(ChildProcessError):
+            os.waitpid(pid, 0)
+
+
+def _fork_figures(problem, solution, folder, verbose) -> bool:
+    """Draw ``folder``'s figures in a child process; False if this platform cannot fork."""
+    if not hasattr(os, "fork") or os.environ.get("MDO_FIGURES_IN_PROCESS"):
+        return False
+    sys.stdout.flush()
+    sys.stderr.flush()
+    pid = os.fork()
+    if pid:
+        _BACKGROUND.append(pid)
+        return True
+    code = 0
+    try:   # the child: no signal of the terminal's (the parent handles them and waits for this)
+        signal.signal(signal.SIGINT, signal.SIG_IGN)
+        signal.signal(signal.SIGTERM, signal.SIG_DFL)
+        _draw_figures(problem, solution, folder, verbose)
+    except BaseException:   # noqa: BLE001 - a figure must never take the run down
+        code = 1
+    finally:
+        with contextlib.suppress(Exception):
+            sys.stdout.flush()
+            sys.stderr.flush()
+        os._exit(code)
+
+
+def _draw_figures(problem, solution, folder, verbose) -> None:
     for report in problem.reports:
         try:
             report(solution, folder)
@@ -341,6 +372,26 @@ def solve_into(problem: Problem, folder, *, max_iter: int | None = None, verbose
         write_report_html(folder)
     except Exception as exc:
         print(f"warning: report.html failed: {type(exc).__name__}: {exc}", file=sys.stderr)
+
+
+def solve_into(problem: Problem, folder, *, max_iter: int | None = None, verbose: bool = True,
+               solve_options: dict | None = None, progress=None, figures: str = "now") -> Solution:
+    """Solve ``problem`` and write its files into ``folder`` (no folder management: a
+    staging folder of a ``RunFolder``).  An ``OSError`` while writing the results is
+    raised as ``ResultWriteError`` (exit 1: the solve happened).  ``figures="background"``
+    draws the figures and ``report.html`` in a forked child once the data files are
+    written (``wait_for_figures`` waits for it; without ``os.fork`` they are drawn now)."""
+    folder = Path(folder)
+    folder.mkdir(parents=True, exist_ok=True)
+    solution = problem.solve(log_path=folder / "ipopt.log", max_iter=max_iter, verbose=verbose,
+                             progress=progress, **(solve_options or {}))
+    try:
+        solution.save(folder)
+    except OSError as exc:
+        raise ResultWriteError(fs_error(exc, "writing the results into", folder), solution) from exc
+    if figures == "background" and _fork_figures(problem, solution, folder, verbose):
+        return solution
+    _draw_figures(problem, solution, folder, verbose)
     return solution
 
 
