@@ -49,22 +49,23 @@ AIRFRAME_OPTIONS = {
     "nacelle_slipstream": (bool,),
     "cooling_drag": (bool,),
     "airframe_calibration": (float, 0.5, 1.5),
-    "wing_mass": (str, "raymer", "bending"),
+    "wing_mass": (str, "bending", "raymer"),
 }
 
 
 def airframe_variant(cfg, motor_model: str = "pmsm", sections: str = "as_defined", leakage_fraction=None,
                      nacelle_slipstream: bool = True, cooling_drag: bool = True, airframe_calibration=None,
-                     wing_mass: str = "raymer"):
+                     wing_mass: str = "bending"):
     """``cfg`` with the what-ifs of ``AIRFRAME_OPTIONS``: every motor group's ``model``;
     ``sections="free_transition"`` drops the transition setting of every wing's and rotor's
     airfoil (``"NACA_63_412@xtr=0.1"`` -> the free-transition XFOIL polar ``"NACA_63_412"``);
     the leakage fraction, nacelles in the slipstream, cooling drag on/off
     (``VehicleConfig.drag``); ``airframe_calibration`` replaces the mass build-up's one factor
-    on the non-battery terms (``mass_inputs``; 1.0: the raw regressions); ``wing_mass="bending"``
-    gives the lifting wings a ``WingStructure`` (aluminium defaults: their mass responds to
-    span, taper and lift share through the bending material, ``mdo.vehicle.wing_structure``)
-    where ``cfg`` has none.  The defaults return ``cfg``'s own models."""
+    on the non-battery terms (``mass_inputs``; 1.0: the raw regressions); ``wing_mass="raymer"``
+    drops the lifting wings' ``WingStructure`` (their mass is Raymer's Eq. 15.46 alone, the
+    regression outside its data beyond AR ~12); ``"bending"`` (default) keeps ``cfg``'s, or
+    gives the aluminium defaults where it has none (``mdo.vehicle.wing_structure``).  The
+    defaults return ``cfg``'s own models."""
     from dataclasses import replace
     free = sections == "free_transition"
     strip = (lambda name: name.split("@", 1)[0]) if free else (lambda name: name)
@@ -78,7 +79,9 @@ def airframe_variant(cfg, motor_model: str = "pmsm", sections: str = "as_defined
     mass_inputs = cfg.mass_inputs if airframe_calibration is None else \
         {**cfg.mass_inputs, "airframe_calibration": float(airframe_calibration)}
     structure = cfg.wing_structure
-    if wing_mass == "bending" and structure is None:
+    if wing_mass == "raymer":
+        structure = None
+    elif structure is None:
         from .vehicle.wing_structure import WingStructure
         structure = WingStructure()
     return replace(cfg, rotor_groups=groups, wings=wings, drag=drag, mass_inputs=mass_inputs,

@@ -37,7 +37,7 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
           max_block_time_min: float | None = None, min_climb_gradient_pct: float | None = None,
           motor_model: str = "pmsm", sections: str = "as_defined", leakage_fraction: float | None = None,
           nacelle_slipstream: bool = True, cooling_drag: bool = True, airframe_calibration: float | None = None,
-          wing_mass: str = "raymer",
+          wing_mass: str = "bending",
           trim: bool = True):
     p = Problem("ga8p", "GA-8P whole-mission optimization (Clarke et al. Eq. 7)")
     cfg = ga8p(rotation)

@@ -134,7 +134,7 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
           wake_samples: int = 5, tol: float = 1e-4, pitch: str = "control",
           motor_model: str = "pmsm", sections: str = "as_defined", leakage_fraction: float | None = None,
           nacelle_slipstream: bool = True, cooling_drag: bool = True, airframe_calibration: float | None = None,
-          wing_mass: str = "raymer",
+          wing_mass: str = "bending",
           tilt: str = "schedule", cabin_attitude_deg: float | None = None, trim: bool = True,
           trajectory: str = "prescribed", max_block_time_min: float | None = None,
           min_climb_gradient_pct: float | None = None, max_span_m: float | None = None):

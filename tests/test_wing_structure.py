@@ -12,12 +12,13 @@ import pytest
 from mdo.core.errors import InputError
 from mdo.vehicle.catalog import ga2p, ttw
 from mdo.vehicle.mass import MassDesign, mass_table_markdown, mass_terms, solve_togw
-from mdo.vehicle.wing_structure import WingStructure, bending_material_kg, elliptic_shear_moment
+from mdo.vehicle.wing_structure import WingStructure, bending_material_kg, elliptic_shear_moment, wing_box_breakdown
 
 sys.path.insert(0, str(Path(__file__).parent))
 from test_vehicle_definition import _built, _segments  # noqa: E402
 
-CAPS_ONLY = WingStructure(non_optimum_factor=1.0, web_stress_Pa=5e9, quadrature_points=24)  # webs ~0.1-0.3 %
+CAPS_ONLY = WingStructure(non_optimum_factor=1.0, web_stress_Pa=5e9, quadrature_points=24,
+                          max_tip_deflection_fraction=None)   # S3: strength alone  # webs ~0.1-0.3 %
 
 
 def test_elliptic_loads_match_the_integrated_load():
@@ -54,6 +55,45 @@ def test_rectangular_wing_caps_against_the_closed_form():
     assert bending_material_kg(CAPS_ONLY, S, b, 1.0, tc, n, F) == pytest.approx(expect, rel=5e-3)   # + the webs at 5 GPa, 0.2 %
 
 
+def test_stiffness_caps_meet_the_tip_deflection_and_leave_a_short_wing_alone():
+    """S4: the caps are the larger of the strength caps and the least-mass caps that hold the
+    limit-load tip deflection to f s; the deflection is checked here by integrating the
+    curvature M / (E I) twice along the span (an independent route to S4's closed form)."""
+    ws = WingStructure(non_optimum_factor=1.0, web_stress_Pa=5e9, quadrature_points=48)
+    strength_only = replace(ws, max_tip_deflection_fraction=None)
+    def tip_deflection_fraction(S, b, taper, tc=0.12, n=5.7, F=14000.0):
+        s = b / 2
+        c_r = 2 * S / (b * (1 + taper))
+        u = np.linspace(0.0, 1.0, 20001)
+        _, M = elliptic_shear_moment(u, 0.5 * n * F, s)
+        h = ws.box_depth_fraction * tc * c_r * (1 - (1 - taper) * u)
+        A_s = M / (ws.cap_stress_Pa * h)
+        g = np.sqrt((1 - u) * M / ws.factor_of_safety) / h
+        lam = 2 * s * np.trapezoid(g, u) / (ws.youngs_modulus_Pa * ws.max_tip_deflection_fraction)
+        A = np.maximum(A_s, lam * g)
+        M, A = M[:-1], A[:-1]        # the tip station: no moment, no cap
+        u, h = u[:-1], h[:-1]
+        kappa = (M / ws.factor_of_safety) / (ws.youngs_modulus_Pa * A * h ** 2 / 2)   # limit load
+        slope = np.concatenate([[0.0], np.cumsum(0.5 * (kappa[1:] + kappa[:-1]) * np.diff(u * s))])
+        w = np.trapezoid(slope, u * s)
+        caps = 2 * ws.density_kgpm3 * 2 * s * np.trapezoid(A, u)
+        return w / s, caps
+    # an AR-30 wing: stiffness governs; the tip deflects at most f s, and within 15 % of it
+    frac, caps = tip_deflection_fraction(10.85, 18.0, 0.25)
+    assert 0.85 * 0.2 < frac <= 0.2 * 1.001
+    b = bending_material_kg(ws, 10.85, 18.0, 0.25, 0.12, 5.7, 14000.0)
+    b0 = bending_material_kg(strength_only, 10.85, 18.0, 0.25, 0.12, 5.7, 14000.0)
+    assert b == pytest.approx(caps, rel=0.02)        # 48-point quadrature and the 1 % rounding of S4
+    assert b > 1.5 * b0
+    # the P2006T's wing (AR 8.8): strength governs; S4 adds at most 2 % (the rounding and the
+    # tip stations, where the stiffness caps of least mass exceed the strength caps)
+    short = bending_material_kg(ws, 14.76, 11.4, 0.7, 0.12, 5.7, 14000.0)
+    assert bending_material_kg(strength_only, 14.76, 11.4, 0.7, 0.12, 5.7, 14000.0) < short < 1.02 * \
+        bending_material_kg(strength_only, 14.76, 11.4, 0.7, 0.12, 5.7, 14000.0)
+    assert wing_box_breakdown(ws, 14.76, 11.4, 0.7, 0.12, 5.7, 14000.0)["strength_tip_deflection_fraction"] \
+        == pytest.approx(0.13, abs=0.005)
+
+
 def test_rotor_masses_relieve_the_bending_smoothly():
     ws = WingStructure()
     bare = bending_material_kg(ws, 14.76, 11.4, 0.6, 0.12, 5.7, 18000.0)
@@ -68,7 +108,7 @@ def test_rotor_masses_relieve_the_bending_smoothly():
 
 
 def test_baseline_mass_is_raymers_and_the_lift_share_moves_it():
-    cfg = ttw()
+    cfg = replace(ttw(), wing_structure=None)
     bend = replace(cfg, wing_structure=WingStructure())
     W0 = solve_togw(cfg)
     assert solve_togw(bend) == pytest.approx(W0, rel=1e-9)      # the level is the regression's
@@ -100,7 +140,7 @@ def test_the_design_lift_is_sized_by_the_wings_lift_and_holds_the_span():
     """A short GA-2P climb and cruise, wing free: with the bending material the span stops
     inside its box and short of where Raymer's AR^0.6 alone puts it, and the design lift is
     the largest lift of the wing over the nodes."""
-    p0, v0, _ = _built(ga2p(), _segments())
+    p0, v0, _ = _built(replace(ga2p(), wing_structure=None), _segments())
     s0 = p0.solve(verbose=False)
     assert s0.status == "Solve_Succeeded"
     span_raymer = float(np.ravel(s0.value(v0.design["wings"]["main_wing"]["span"]))[0])

@@ -84,6 +84,7 @@ from .base import G0, NodeEvaluation, Output, ResidualGroup, State, Unknown
 from .config import VehicleConfig, WingConfig, disks_in_one_plane
 from .mass import MassDesign, solve_togw, total_mass
 from .rotor_group import RotorGroupModel, section_name
+from .wing_structure import wing_box_breakdown
 
 __all__ = ["Aircraft", "DesignBounds"]
 
@@ -464,6 +465,20 @@ class Aircraft(AirframeDragMixin):
         self.fins = cfg.fins
         problem.output("wing_aspect_ratio", self.design["wings"][main.name]["span"] ** 2 / main.area_m2, unit="-",
                        summary=True)
+        self._wing_shape_outputs(problem)
+
+    def _wing_shape_outputs(self, problem):
+        """Every lifting wing's aspect ratio and, with a ``WingStructure``, the limit-load tip
+        deflection its strength-sized caps would have (fraction of the semispan; above the
+        structure's ``max_tip_deflection_fraction`` the stiffness sizes the caps, S4)."""
+        ws = self.config.wing_structure
+        for w in self.lifting_wings:
+            dw = self.design["wings"][w.name]
+            problem.output(f"{w.name}.aspect_ratio", dw["span"] ** 2 / w.area_m2, unit="-", summary=True)
+            if ws is not None:
+                box = wing_box_breakdown(ws, w.area_m2, dw["span"], dw["taper"], w.thickness_to_chord, 1.0, 1.0)
+                problem.output(f"{w.name}.strength_sized_tip_deflection", box["strength_tip_deflection_fraction"],
+                               unit="of semispan", summary=True)
 
     def _lattice(self, surfaces, S_ref, lift_velocity="local"):
         """The vehicle's lattice of ``surfaces``: references from the main wing's baseline."""

@@ -23,6 +23,7 @@ from typing import Sequence
 import numpy as np
 
 from ..core.errors import InputError, check_positive, check_range
+from .wing_structure import WingStructure
 
 __all__ = ["WingConfig", "RotorGroupConfig", "MotorConfig", "FuselageConfig", "BatteryConfig",
            "AirframeDragConfig", "VehicleConfig", "replace", "WING_ROLES", "LIFTING_ROLES"]
@@ -455,10 +456,12 @@ class VehicleConfig:
     cg_x_range_m: tuple | None = None
     drag: AirframeDragConfig = field(default_factory=AirframeDragConfig)
     mass_inputs: dict = field(default_factory=dict)
-    # the lifting wings' mass: None is Raymer's Eq. 15.46 alone (each wing sized for the whole
-    # N_z W); a WingStructure adds the bending material's response to span, taper, thickness
-    # and the wing's own lift share (mdo.vehicle.wing_structure)
-    wing_structure: object = None
+    # the lifting wings' mass: a WingStructure (default: aluminium, strength and a limit-load
+    # tip deflection of 20 % of the semispan) gives the bending material's response to span,
+    # taper, thickness and the wing's own lift share on top of the area-held rest of Raymer's
+    # Eq. 15.46 (mdo.vehicle.wing_structure); None is Eq. 15.46 alone (each wing sized for the
+    # whole N_z W, AR^0.6: fitted below AR ~12, it lets an optimizer stretch a wing to AR 18-36)
+    wing_structure: object = field(default_factory=WingStructure)
     notes: tuple = ()
 
     def __post_init__(self):

@@ -38,7 +38,7 @@ import numpy as np
 from ..core import units as u
 from ..core.errors import InputError
 from .config import VehicleConfig, WingConfig, replace
-from .wing_structure import G0, bending_material_kg
+from .wing_structure import G0, bending_material_kg, wing_box_breakdown
 
 __all__ = ["ASSUMPTIONS", "MassDesign", "mass_terms", "total_mass", "solve_togw",
            "togw_residual", "mass_table_markdown"]
@@ -305,13 +305,23 @@ def mass_table_markdown(cfg: VehicleConfig, design: MassDesign | None = None) ->
         lines += ["", "Wings (``mdo.vehicle.wing_structure``): area-held part (Raymer Eq. 15.46 less the "
                   "bending material, both at the baseline) + bending material of the design, sized for "
                   f"n_ult = {cfg.ultimate_load_factor:g} times the wing's design lift:", "",
-                  "| wing | design lift (kN) | area-held part (kg) | bending material (kg) |", "|---|---:|---:|---:|"]
+                  "| wing | AR | design lift (kN) | area-held part (kg) | bending material (kg) | of which for "
+                  "stiffness (kg) | limit-load tip deflection of strength-sized caps |", "|---|---:|---:|---:|---:|---:|---:|"]
+        ws = cfg.wing_structure
         for w in cfg.lifting_wings:
             span, taper = d.wing_span_m.get(w.name, w.span_m), d.wing_taper.get(w.name, w.taper)
             F = d.design_lift_N(cfg, w, W)
-            m_b = _wing_bending_kg(cfg, w, span, taper, F, _relief_masses(cfg, d, w, span, rotors))
-            lines.append(f"| {w.name} | {float(F) / 1e3:.2f} | {_wing_secondary_kg(cfg, w.name):.1f} | "
-                         f"{float(m_b):.1f} |")
+            box = wing_box_breakdown(ws, w.area_m2, span, taper, w.thickness_to_chord, cfg.ultimate_load_factor, F,
+                                     _relief_masses(cfg, d, w, span, rotors))
+            lines.append(f"| {w.name} | {float(span) ** 2 / w.area_m2:.1f} | {float(F) / 1e3:.2f} | "
+                         f"{_wing_secondary_kg(cfg, w.name):.1f} | {float(box['total_kg']):.1f} | "
+                         f"{float(box['caps_kg'] - box['strength_caps_kg']):.1f} | "
+                         f"{100 * float(box['strength_tip_deflection_fraction']):.0f} % of the semispan |")
+        f_max = ws.max_tip_deflection_fraction
+        lines += ["", "Stiffness: the caps also hold the limit-load tip deflection to "
+                  + ("(no limit)" if f_max is None else f"{100 * f_max:.0f} % of the semispan")
+                  + " (S4 of mdo.vehicle.wing_structure); strength-sized caps deflecting more than that are "
+                  "thickened where it pays most."]
     if cfg.notes:
         lines += ["", "Notes:"] + [f"- {n}" for n in cfg.notes]
     return "\n".join(lines) + "\n"

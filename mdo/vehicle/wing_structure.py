@@ -37,8 +37,30 @@ area, which the design holds: ``mdo.vehicle.mass`` takes it as the Raymer wing o
 baseline less this model's bending material at the baseline (the regression's level, the
 bending physics' slopes).
 
+* **Stiffness.**  Caps sized for strength alone bend the tip of a long wing far: their
+  curvature at limit load is ``2 sigma / (E h FS)`` whatever the load, so the tip deflection
+  at limit load is ``delta_s = s^2 int (1-u) 2 sigma / (FS E h) du`` (FS the factor of safety
+  between limit and ultimate load, 1.5, 14 CFR 23.2230(a)(2) / CS 23.305) and grows like
+  ``s^2 / h``: 13 % of the semispan for the P2006T's wing (AR 8.8), 42 % for an aluminium
+  AR-30 wing.  The wing must also meet ``delta <= f s`` at limit load.  The caps of least
+  mass that meet the deflection alone are ``A = lambda g``, ``g = sqrt((1-u) M_lim) / h``
+  (the Lagrange condition of min int A du at int (1-u) 2 M_lim / (E A h^2) du = f / s), so
+  ``lambda = 2 s G / (E f)`` with ``G = int g du``.  Each station's cap is the larger of the
+  two (smooth maximum, width 1 % of their sum): feasible for both criteria, and at most the
+  stiffness material above the strength-only optimum::
+
+      m_caps = 2 rho s int 2 max(|M| / (sigma h), lambda g) du                   (S4)
+
+  Why a deflection limit: the lattice is a rigid planar wing, the beam linear; at
+  ``f = 0.2`` (default) the 1 g deflection is ``0.2 / 3.8``, 5 % of the semispan, where the
+  projected span the rigid lattice assumes is still within 0.5 %.  It is also about what a
+  strength-sized aluminium wing of AR 15 (the X-57 Mod IV's) deflects (21 %), so no wing
+  the class flies is held by it; wings beyond AR ~15 pay for their stiffness.  Wing-mounted
+  rotors add whirl-flutter stiffness needs this model does not have (``f`` is a field: a
+  stiffer criterion for them).  ``max_tip_deflection_fraction=None``: strength only.
+
 Material defaults: aluminium 2024-T3 (MMPDS-01: density 2780 kg/m^3, F_tu 483 MPa,
-F_su 283 MPa), with a cap allowable of 345 MPa (compression caps, stiffened-panel
+F_su 283 MPa, E 72.4 GPa), with a cap allowable of 345 MPa (compression caps, stiffened-panel
 crippling below F_tu) and 200 MPa in the webs; ``k_box`` 0.85 (caps inside the section's
 depth); non-optimum factor 1.5.  These are assumptions of the class, stated, and fields
 of :class:`WingStructure` a user replaces for another construction (a composite wing).
@@ -51,9 +73,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..core.errors import InputError, check_range
-from ..core.smooth import sigmoid, smooth_abs, softplus
+from ..core.smooth import sigmoid, smooth_abs, smooth_max, softplus
 
-__all__ = ["WingStructure", "bending_material_kg", "elliptic_shear_moment"]
+__all__ = ["WingStructure", "bending_material_kg", "wing_box_breakdown", "elliptic_shear_moment"]
 
 G0 = 9.80665
 
@@ -68,13 +90,19 @@ class WingStructure:
     non_optimum_factor: float = 1.5
     quadrature_points: int = 12
     relief_width_fraction: float = 0.01
+    youngs_modulus_Pa: float = 72.4e9
+    max_tip_deflection_fraction: float | None = 0.2    # at limit load, of the semispan (S4)
+    factor_of_safety: float = 1.5                      # ultimate / limit load
 
     def __post_init__(self):
         for name, (lo, hi) in {"density_kgpm3": (100.0, 20000.0), "cap_stress_Pa": (1e6, 5e9),
                                "web_stress_Pa": (1e6, 5e9), "box_depth_fraction": (0.1, 1.0),
                                "non_optimum_factor": (1.0, 5.0), "relief_width_fraction": (0.002, 0.2),
-                               "quadrature_points": (4, 64)}.items():
+                               "quadrature_points": (4, 64), "youngs_modulus_Pa": (1e8, 1e12),
+                               "factor_of_safety": (1.0, 3.0)}.items():
             check_range(f"wing_structure.{name}", getattr(self, name), lo, hi)
+        if self.max_tip_deflection_fraction is not None:
+            check_range("wing_structure.max_tip_deflection_fraction", self.max_tip_deflection_fraction, 0.01, 1.0)
         if not isinstance(self.quadrature_points, int):
             raise InputError("wing_structure.quadrature_points", f"an integer, got {self.quadrature_points!r}")
 
@@ -90,17 +118,27 @@ def elliptic_shear_moment(u, half_lift, semispan):
 
 def bending_material_kg(ws: WingStructure, area_m2, span_m, taper, thickness_to_chord, load_factor,
                         design_lift_N, point_masses=()):
-    """Bending and shear material of the whole wing (S3, times the non-optimum factor), kg.
+    """Bending and shear material of the whole wing (S3, S4, times the non-optimum factor), kg.
 
     ``point_masses``: ``(mass_kg, y_m)`` per half wing (numbers or CasADi), the masses
     that relieve the bending.  Every other input is a number or a CasADi expression."""
+    return wing_box_breakdown(ws, area_m2, span_m, taper, thickness_to_chord, load_factor, design_lift_N,
+                              point_masses)["total_kg"]
+
+
+def wing_box_breakdown(ws: WingStructure, area_m2, span_m, taper, thickness_to_chord, load_factor,
+                       design_lift_N, point_masses=()) -> dict:
+    """The wing box of :func:`bending_material_kg` term by term (kg, non-optimum factor in):
+    ``caps_kg`` (S4), ``strength_caps_kg`` (S3's caps alone), ``webs_kg``, ``total_kg``, and
+    ``strength_tip_deflection_fraction``: the limit-load tip deflection of the strength-sized
+    caps over the semispan (what S4's stiffness criterion compares with its limit)."""
     s = span_m / 2.0
     c_root = 2.0 * area_m2 / (span_m * (1.0 + taper))
     x, w = np.polynomial.legendre.leggauss(ws.quadrature_points)
     u_all, w_all = 0.5 * (x + 1.0), 0.5 * w
     V_root, M_root = elliptic_shear_moment(0.0, 0.5 * load_factor * design_lift_N, s)
     width = ws.relief_width_fraction * s
-    total = 0.0
+    strength, g, webs, h_all, defl = [], [], 0.0, [], 0.0
     for u, wq in zip(u_all, w_all):
         V, M = elliptic_shear_moment(u, 0.5 * load_factor * design_lift_N, s)
         for m_i, y_i in point_masses:
@@ -108,7 +146,25 @@ def bending_material_kg(ws: WingStructure, area_m2, span_m, taper, thickness_to_
             M = M - load_factor * G0 * m_i * softplus(y_i - u * s, width)
             V = V - load_factor * G0 * m_i * sigmoid(y_i - u * s, width)
         h = ws.box_depth_fraction * thickness_to_chord * c_root * (1.0 - (1.0 - taper) * u)
-        integrand = (2.0 * smooth_abs(M, 1e-6 * M_root) / (ws.cap_stress_Pa * h)
-                     + smooth_abs(V, 1e-6 * V_root) / ws.web_stress_Pa)
-        total = total + wq * integrand
-    return ws.non_optimum_factor * 2.0 * ws.density_kgpm3 * s * total
+        M_abs = smooth_abs(M, 1e-6 * M_root)
+        strength.append(M_abs / (ws.cap_stress_Pa * h))                    # one cap's area, S3
+        g.append(((1.0 - u) * M_abs / ws.factor_of_safety) ** 0.5 / h)   # S4's g at limit load
+        webs = webs + wq * smooth_abs(V, 1e-6 * V_root) / ws.web_stress_Pa
+        defl = defl + wq * (1.0 - u) * 2.0 * ws.cap_stress_Pa / (ws.factor_of_safety * ws.youngs_modulus_Pa * h)
+    caps = 0.0
+    strength_caps = 0.0
+    if ws.max_tip_deflection_fraction is None:
+        lam = None
+    else:
+        G = sum(wq * gi for wq, gi in zip(w_all, g))
+        lam = 2.0 * s * G / (ws.youngs_modulus_Pa * ws.max_tip_deflection_fraction)
+    for wq, a_s, gi in zip(w_all, strength, g):
+        strength_caps = strength_caps + wq * a_s
+        if lam is None:
+            caps = caps + wq * a_s
+        else:
+            a_k = lam * gi
+            caps = caps + wq * smooth_max(a_s, a_k, 0.01 * (a_s + a_k))
+    k = ws.non_optimum_factor * 2.0 * ws.density_kgpm3 * s
+    return {"caps_kg": k * 2.0 * caps, "strength_caps_kg": k * 2.0 * strength_caps, "webs_kg": k * webs,
+            "total_kg": k * (2.0 * caps + webs), "strength_tip_deflection_fraction": s * defl}
