@@ -104,6 +104,10 @@ def main():
                          "{:.2f}"))
             rows.append((f"{tag} taper", wr["taper"], (d_an["wings"][w]["taper"], d_opt["wings"][w]["taper"]),
                          "{:.2f}"))
+            if f"{w}.aspect_ratio" in s_an:
+                rows.append((f"{tag} aspect ratio (not in the paper's table)", (None, None),
+                             (s_an[f"{w}.aspect_ratio"], None if s_opt is None else s_opt.get(f"{w}.aspect_ratio")),
+                             "{:.1f}"))
             for i, tw in enumerate(wr["twist"]):
                 rows.append((f"{tag} section {i + 1} twist (deg)", tw,
                              (d_an["wings"][w]["twist_deg"][i], d_opt["wings"][w]["twist_deg"][i]), "{:.2f}"))

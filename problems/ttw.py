@@ -71,9 +71,9 @@ ends "Solved To Acceptable Level" at the same point after some 30 iterations at 
 ``motor_model`` ("pmsm", or "dc": the paper's DC motor behind a 0.95 ESC), ``sections``
 ("as_defined": the catalog's tripped sections; "free_transition": the XFOIL polars), ``leakage_fraction``
 (0.10), ``nacelle_slipstream`` (true), ``cooling_drag`` (true), ``airframe_calibration`` (the
-catalog's mass calibration; 1.0 = the raw regressions), ``wing_mass`` ("raymer": Eq. 15.46
-alone; "bending": the wing's bending material added, so that its mass responds to span, taper
-and the wing's own lift share, ``mdo.vehicle.wing_structure``): what-ifs on the airframe and
+catalog's mass calibration; 1.0 = the raw regressions), ``wing_mass`` ("bending", default: the
+wing's bending and stiffness material, so that its mass responds to span, taper and the wing's own
+lift share, ``mdo.vehicle.wing_structure``; "raymer": Eq. 15.46 alone): what-ifs on the airframe and
 motor models (``mdo.studies.airframe_variant``; results/table3_reconciliation.md).
 """
 from dataclasses import replace

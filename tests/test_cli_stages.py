@@ -177,3 +177,12 @@ def test_the_baselines_figures_are_drawn_during_stage_2_and_waited_for(tmp_path,
     assert sorted(p.name for p in (out / "analysis").iterdir()) == names
     for p in (out / "analysis").iterdir():
         assert p.stat().st_size > 0
+
+
+def test_solve_into_names_a_wrong_figures_value(tmp_path):
+    from mdo.core.errors import InputError
+    from mdo.nlp.run import load_problem_file, solve_into
+    p = load_problem_file(POLAR, analysis=True)
+    with pytest.raises(InputError, match="figures"):
+        solve_into(p, tmp_path / "x", figures="later")
+    assert not (tmp_path / "x").exists()          # refused before anything is written

@@ -67,12 +67,14 @@ def test_cruise_energy_equals_power_times_time(analysis):
 def test_mass_and_geometry_follow_the_design(analysis):
     p, v, m, sol = analysis
     from mdo.vehicle.mass import MassDesign, solve_togw
-    # the design is frozen but the motors are sized: the gross weight is the build-up at
-    # the solved motor rating (and not the catalog's)
+    # the design is frozen but the motors and the wing's design lift are sized: the gross
+    # weight is the build-up at the solved motor rating and design lift (not the catalog's)
     gm = v.groups[0]
     md = MassDesign.baseline(v.config)
     md.motor_rated_power_W = {gm.name: float(sol.value(gm.design["P_rated"]))}
     md.motor_rated_speed_radps = {gm.name: float(sol.value(gm.design["omega_rated"]))}
+    md.wing_design_lift_N = {w: float(sol.value(F)) for w, F in v.wing_design_lift.items()}
+    assert md.wing_design_lift_N      # the default WingStructure sizes each lifting wing
     assert float(sol.value(v.togw)) == pytest.approx(solve_togw(v.config, md), rel=1e-6)
     # the sized rating meets the largest shaft power the mission asks of a motor (within 1e-6),
     # the climb at the short-time rating (1.2 x, catalog GA_MOTOR), and is active there

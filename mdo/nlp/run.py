@@ -35,6 +35,7 @@ import time
 import traceback
 from pathlib import Path
 
+from ..core.errors import InputError
 from .options import check_options
 from .problem import INTERRUPT_STATUS, Problem, Solution, WarmStartError, write_atomic
 
@@ -381,6 +382,8 @@ def solve_into(problem: Problem, folder, *, max_iter: int | None = None, verbose
     raised as ``ResultWriteError`` (exit 1: the solve happened).  ``figures="background"``
     draws the figures and ``report.html`` in a forked child once the data files are
     written (``wait_for_figures`` waits for it; without ``os.fork`` they are drawn now)."""
+    if figures not in ("now", "background"):
+        raise InputError("figures", f"'now' or 'background', got {figures!r}")
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)
     solution = problem.solve(log_path=folder / "ipopt.log", max_iter=max_iter, verbose=verbose,

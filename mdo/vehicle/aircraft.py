@@ -94,11 +94,12 @@ class DesignBounds:
     """Bounds of the design variables, as factors of the baseline (or absolute where noted).
 
     These are ranges of validity of the models, not results: no bound is taken from a
-    published optimum.  Span is held by what it costs (the wing weight, Raymer Eq.
-    15.46, grows with AR^0.6; with a ``WingStructure`` its bending material grows with
-    AR^1.5 and the wing's own lift share) and by ``Aircraft(max_span_m=...)`` when the user has a
-    hangar or gate limit; the box 0.6-3.0 x the baseline span is far outside every
-    committed optimum (the TTW's front wing, the widest, settles at 2.07 x).  Taper by the
+    published optimum.  Span is held by what it costs (the default ``WingStructure``: the
+    bending material grows with AR^1.5 and the wing's own lift share, and beyond the
+    limit-load tip deflection the stiffness material with AR^2; Raymer's Eq. 15.46 alone,
+    ``wing_structure=None``, grows with AR^0.6) and by ``Aircraft(max_span_m=...)`` when the
+    user has a hangar or gate limit; the box 0.6-3.0 x the baseline span is far outside
+    every committed optimum.  Taper by the
     stall margin of the tip strips (cl_max falls with the tip chord's Reynolds number) -
     the box 0.2-1.0 keeps the planform a trapezoid with a tip chord the lattice and the
     section data can carry; a tilt-wing, whose wing never flies slowly, can sit on it.
