@@ -173,6 +173,11 @@ def test_tilt_wing_sizes_on_wing_borne_nodes_and_checks_the_limit_load_elsewhere
         assert any(lab.startswith("CR") for lab in sized)
         assert not any(lab.startswith(("VT", "AT", "VC")) for lab in sized)
         assert any(lab.startswith("AT") for lab in limit) and not any(lab.startswith("CR") for lab in limit)
+        # every wing's aspect ratio and strength-sized deflection reach summary.json, not the main wing's alone
+        for out in (f"{wing}.aspect_ratio", f"{wing}.strength_sized_tip_deflection"):
+            assert p.outputs[out].summary
+    ar = p.opti.debug.value(p.outputs["tandem_wing.aspect_ratio"].expr, p.opti.initial())
+    assert float(ar) == pytest.approx(9.6 ** 2 / 10.85, rel=1e-9)      # the baseline's, at the initial guess
 
 
 def test_a_vehicle_not_in_the_paper_with_two_rotor_groups_on_its_renamed_wing():
