@@ -50,12 +50,13 @@ AIRFRAME_OPTIONS = {
     "cooling_drag": (bool,),
     "airframe_calibration": (float, 0.5, 1.5),
     "wing_mass": (str, "bending", "raymer"),
+    "max_tip_deflection_pct": (float, 1.0, 100.0),
 }
 
 
 def airframe_variant(cfg, motor_model: str = "pmsm", sections: str = "as_defined", leakage_fraction=None,
                      nacelle_slipstream: bool = True, cooling_drag: bool = True, airframe_calibration=None,
-                     wing_mass: str = "bending"):
+                     wing_mass: str = "bending", max_tip_deflection_pct=None):
     """``cfg`` with the what-ifs of ``AIRFRAME_OPTIONS``: every motor group's ``model``;
     ``sections="free_transition"`` drops the transition setting of every wing's and rotor's
     airfoil (``"NACA_63_412@xtr=0.1"`` -> the free-transition XFOIL polar ``"NACA_63_412"``);
@@ -64,8 +65,9 @@ def airframe_variant(cfg, motor_model: str = "pmsm", sections: str = "as_defined
     on the non-battery terms (``mass_inputs``; 1.0: the raw regressions); ``wing_mass="raymer"``
     drops the lifting wings' ``WingStructure`` (their mass is Raymer's Eq. 15.46 alone, the
     regression outside its data beyond AR ~12); ``"bending"`` (default) keeps ``cfg``'s, or
-    gives the aluminium defaults where it has none (``mdo.vehicle.wing_structure``).  The
-    defaults return ``cfg``'s own models."""
+    gives the aluminium defaults where it has none (``mdo.vehicle.wing_structure``);
+    ``max_tip_deflection_pct`` replaces its stiffness criterion (limit-load tip deflection, percent
+    of the semispan; 100: in effect strength alone).  The defaults return ``cfg``'s own models."""
     from dataclasses import replace
     free = sections == "free_transition"
     strip = (lambda name: name.split("@", 1)[0]) if free else (lambda name: name)
@@ -84,6 +86,8 @@ def airframe_variant(cfg, motor_model: str = "pmsm", sections: str = "as_defined
     elif structure is None:
         from .vehicle.wing_structure import WingStructure
         structure = WingStructure()
+    if structure is not None and max_tip_deflection_pct is not None:
+        structure = replace(structure, max_tip_deflection_fraction=float(max_tip_deflection_pct) / 100.0)
     return replace(cfg, rotor_groups=groups, wings=wings, drag=drag, mass_inputs=mass_inputs,
                    wing_structure=structure)
 

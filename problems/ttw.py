@@ -73,7 +73,8 @@ ends "Solved To Acceptable Level" at the same point after some 30 iterations at 
 (0.10), ``nacelle_slipstream`` (true), ``cooling_drag`` (true), ``airframe_calibration`` (the
 catalog's mass calibration; 1.0 = the raw regressions), ``wing_mass`` ("bending", default: the
 wing's bending and stiffness material, so that its mass responds to span, taper and the wing's own
-lift share, ``mdo.vehicle.wing_structure``; "raymer": Eq. 15.46 alone): what-ifs on the airframe and
+lift share, ``mdo.vehicle.wing_structure``; "raymer": Eq. 15.46 alone), ``max_tip_deflection_pct`` (20: the
+wing's limit-load tip deflection, percent of the semispan, that its caps are sized to hold): what-ifs on the airframe and
 motor models (``mdo.studies.airframe_variant``; results/table3_reconciliation.md).
 """
 from dataclasses import replace
@@ -134,7 +135,7 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
           wake_samples: int = 5, tol: float = 1e-4, pitch: str = "control",
           motor_model: str = "pmsm", sections: str = "as_defined", leakage_fraction: float | None = None,
           nacelle_slipstream: bool = True, cooling_drag: bool = True, airframe_calibration: float | None = None,
-          wing_mass: str = "bending",
+          wing_mass: str = "bending", max_tip_deflection_pct: float | None = None,
           tilt: str = "schedule", cabin_attitude_deg: float | None = None, trim: bool = True,
           trajectory: str = "prescribed", max_block_time_min: float | None = None,
           min_climb_gradient_pct: float | None = None, max_span_m: float | None = None):
@@ -145,7 +146,7 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
                                                  max_charge_current_A=max_charge_current_A),
                   cruise_speed_mps=cruise_speed_mph * MPH, cruise_altitude_m=cruise_altitude_ft * FT)
     cfg = airframe_variant(cfg, motor_model, sections, leakage_fraction, nacelle_slipstream, cooling_drag,
-                           airframe_calibration, wing_mass)
+                           airframe_calibration, wing_mass, max_tip_deflection_pct)
     vehicle = Aircraft(cfg, trim=trim, n_stations=n_stations, n_azimuth=n_azimuth, wing_strips=wing_strips,
                        mass_model=mass_model, coupling=coupling, swirl_recovery=swirl_recovery, limits=limits,
                        tip_mach_limit=tip_mach_limit, allow_regeneration=allow_regeneration,

@@ -194,3 +194,17 @@ def test_a_vehicle_not_in_the_paper_with_two_rotor_groups_on_its_renamed_wing():
     p, v, m = _built(cfg, _segments(cruise_parameters={"inboard.active": 0.0}))
     assert "wing design lift" in p.groups
     assert all(np.isfinite(x["max_violation"]) for x in p.initial_violations())
+
+
+def test_the_wing_mass_options_of_the_problem_files():
+    """``-o wing_mass=raymer`` drops the structure; ``-o max_tip_deflection_pct`` sets S4's limit."""
+    from mdo.studies import airframe_variant
+    assert ga2p().wing_structure == WingStructure()                       # the default wing mass
+    assert airframe_variant(ga2p(), wing_mass="raymer").wing_structure is None
+    stiff = airframe_variant(ga2p(), max_tip_deflection_pct=10.0).wing_structure
+    assert stiff.max_tip_deflection_fraction == pytest.approx(0.10)
+    W = solve_togw(ga2p())
+    d = MassDesign.baseline(ga2p())
+    d.wing_span_m = {"main_wing": 16.0}
+    heavier = mass_terms(replace(ga2p(), wing_structure=stiff), W, d)["wing: main_wing"]
+    assert heavier > mass_terms(ga2p(), W, d)["wing: main_wing"]         # a stiffer wing of AR 17 weighs more
