@@ -72,9 +72,22 @@ def test_active_constraints_rendered_or_not_available(tmp_path, ga2p_run):
 def test_undefined_efficiencies_are_dashes(ga2p_run):
     page = (ga2p_run / "report.html").read_text()
     rows = {m.group(1): m.group(0) for m in re.finditer(r"<tr><td>(\w+)</td>.*?</tr>", page)}
-    bl = rows["BL"]   # the base leg windmills: battery and shaft energy < 0
-    cells = re.findall(r"<td[^>]*>([^<]*)</td>", bl)
-    assert cells[-2:] == ["—", "—"], cells
+    # where energy flows backwards (windmilling: shaft or battery energy <= 0; a propulsive
+    # energy <= 0) the efficiency is a dash, never a number; the base leg's propellers windmill
+    dashes = checked = 0
+    for seg, row in rows.items():
+        cells = re.findall(r"<td[^>]*>([^<]*)</td>", row)
+        if len(cells) != 11 or not all(re.fullmatch(r"-?\d+\.\d+", c) for c in cells[2:5]):
+            continue                     # a row of another table
+        battery, shaft, propulsive = (float(c) for c in cells[2:5])
+        chain, prop = cells[-2:]
+        checked += 1
+        if battery <= 0 or shaft <= 0:
+            assert chain == "—", (seg, cells)
+        if shaft <= 0 or propulsive <= 0:
+            assert prop == "—", (seg, cells)
+        dashes += (chain == "—") + (prop == "—")
+    assert checked >= 10 and dashes and float(re.findall(r"<td[^>]*>([^<]*)</td>", rows["BL"])[4]) < 0
     effs = [float(c) for r in rows.values() for c in re.findall(r"<td[^>]*>([^<]*)</td>", r)[-2:]
             if re.fullmatch(r"0\.\d+|1\.0+", c)]
     assert effs and all(0 < e <= 1 for e in effs)
