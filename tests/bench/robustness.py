@@ -78,6 +78,52 @@ def one_start(module, rng, spread, from_baseline=None, factor=None):
     return start, s_an, s, design, wall
 
 
+
+def _write_report(args, rows) -> list:
+    """The report (markdown and per-start json) of the starts done so far; returns its lines."""
+    ok = [r for r in rows if r[3] == "Solve_Succeeded"]
+    es = np.array([r[5] for r in ok])
+    drawn = (f"Every design variable x {args.factor:g} (clipped to the bounds); " if args.factor else
+             f"Design variables drawn uniformly within +-{100 * args.spread:g} % of the baseline (seed "
+             f"{args.seed}, clipped to the bounds); ")
+    lines = [f"# Robustness: {args.problem} from {len(rows)} " + ("start" if args.factor else "random starts"), "",
+             drawn
+             + (f"each optimization started from the mission of the converged baseline `{args.from_baseline}` with "
+                f"the drawn design" if args.from_baseline else
+                "two-stage continuation per start (mission analysis at the drawn design, then the optimization "
+                "warm-started from it)")
+             + "; the monotone barrier first, the adaptive barrier if it does not converge, as `mdo run`.  "
+             f"Produced by `python tests/bench/robustness.py {' '.join(sys.argv[1:])}`.", "",
+             f"**{len(ok)} of {len(rows)} converged** (IPOPT Solve_Succeeded)."]
+    if len(ok):
+        spread_pct = 100 * (es.max() - es.min()) / es.min()
+        lines += [f"Optimized energy: min {es.min():.4f}, median {np.median(es):.4f}, max {es.max():.4f} kWh; "
+                  f"spread {spread_pct:.3f} % (goal 0.5 %).",
+                  f"Wall time per start (both stages): median {statistics.median(r[6] for r in rows):.0f} s.", "",
+                  "Spread of the optimized design over the converged starts:", "",
+                  "| variable | min | median | max |", "|---|---:|---:|---:|"]
+        for name in ok[0][7]:
+            vals = np.array([np.asarray(r[7][name], float).ravel() for r in ok])
+            for j in range(vals.shape[1]):
+                col = vals[:, j]
+                lab = name + (f"[{j}]" if vals.shape[1] > 1 else "")
+                lines.append(f"| {lab} | {col.min():.5g} | {np.median(col):.5g} | {col.max():.5g} |")
+    lines += ["", "| start | analysis | it | optimization | it | energy (kWh) | wall (s) |",
+              "|---:|---|---:|---|---:|---:|---:|"]
+    for r in rows:
+        lines.append(f"| {r[0]} | {r[1]} | {r[2]} | {r[3]} | {r[4]} | {r[5]:.4f} | {r[6]:.0f} |")
+    out = Path(args.out) if args.out else \
+        ROOT / "results" / "robustness" / (f"{args.problem}" + (f"_x{args.factor:g}" if args.factor else "") + ".md")
+    out.parent.mkdir(exist_ok=True)
+    out.write_text("\n".join(lines) + "\n")
+    # every start's drawn and optimized design, so that distinct optima can be compared later
+    per_start = [{"start": r[0], "analysis_status": r[1], "optimization_status": r[3], "iterations": r[4],
+                  "battery_energy_kWh": r[5], "wall_s": r[6],
+                  "drawn": {k: np.asarray(v, float).tolist() for k, v in r[8].items()},
+                  "optimized": {k: np.asarray(v, float).tolist() for k, v in r[7].items()}} for r in rows]
+    out.with_suffix(".json").write_text(json.dumps(per_start, indent=1) + "\n")
+    return lines
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--problem", default="ga2p")
@@ -111,47 +157,7 @@ def main():
         rows.append((i, an_status, an_it, s.status, it, e, wall, design, start))
         print(f"start {i:2d}: analysis {an_status} ({an_it} it), optimization {s.status} "
               f"({it} it), {e:.4f} kWh, {wall:.0f} s", flush=True)
-    ok = [r for r in rows if r[3] == "Solve_Succeeded"]
-    es = np.array([r[5] for r in ok])
-    drawn = (f"Every design variable x {args.factor:g} (clipped to the bounds); " if args.factor else
-             f"Design variables drawn uniformly within +-{100 * args.spread:g} % of the baseline (seed "
-             f"{args.seed}, clipped to the bounds); ")
-    lines = [f"# Robustness: {args.problem} from {args.starts} " + ("start" if args.factor else "random starts"), "",
-             drawn
-             + (f"each optimization started from the mission of the converged baseline `{args.from_baseline}` with "
-                f"the drawn design" if args.from_baseline else
-                "two-stage continuation per start (mission analysis at the drawn design, then the optimization "
-                "warm-started from it)")
-             + "; the monotone barrier first, the adaptive barrier if it does not converge, as `mdo run`.  "
-             f"Produced by `python tests/bench/robustness.py {' '.join(sys.argv[1:])}`.", "",
-             f"**{len(ok)} of {args.starts} converged** (IPOPT Solve_Succeeded)."]
-    if len(ok):
-        spread_pct = 100 * (es.max() - es.min()) / es.min()
-        lines += [f"Optimized energy: min {es.min():.4f}, median {np.median(es):.4f}, max {es.max():.4f} kWh; "
-                  f"spread {spread_pct:.3f} % (goal 0.5 %).",
-                  f"Wall time per start (both stages): median {statistics.median(r[6] for r in rows):.0f} s.", "",
-                  "Spread of the optimized design over the converged starts:", "",
-                  "| variable | min | median | max |", "|---|---:|---:|---:|"]
-        for name in ok[0][7]:
-            vals = np.array([np.asarray(r[7][name], float).ravel() for r in ok])
-            for j in range(vals.shape[1]):
-                col = vals[:, j]
-                lab = name + (f"[{j}]" if vals.shape[1] > 1 else "")
-                lines.append(f"| {lab} | {col.min():.5g} | {np.median(col):.5g} | {col.max():.5g} |")
-    lines += ["", "| start | analysis | it | optimization | it | energy (kWh) | wall (s) |",
-              "|---:|---|---:|---|---:|---:|---:|"]
-    for r in rows:
-        lines.append(f"| {r[0]} | {r[1]} | {r[2]} | {r[3]} | {r[4]} | {r[5]:.4f} | {r[6]:.0f} |")
-    out = Path(args.out) if args.out else \
-        ROOT / "results" / "robustness" / (f"{args.problem}" + (f"_x{args.factor:g}" if args.factor else "") + ".md")
-    out.parent.mkdir(exist_ok=True)
-    out.write_text("\n".join(lines) + "\n")
-    # every start's drawn and optimized design, so that distinct optima can be compared later
-    per_start = [{"start": r[0], "analysis_status": r[1], "optimization_status": r[3], "iterations": r[4],
-                  "battery_energy_kWh": r[5], "wall_s": r[6],
-                  "drawn": {k: np.asarray(v, float).tolist() for k, v in r[8].items()},
-                  "optimized": {k: np.asarray(v, float).tolist() for k, v in r[7].items()}} for r in rows]
-    out.with_suffix(".json").write_text(json.dumps(per_start, indent=1) + "\n")
+        lines = _write_report(args, rows)   # after every start: a stopped study keeps what it has
     print("\n".join(lines[:8]))
 
 
