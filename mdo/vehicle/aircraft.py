@@ -16,7 +16,8 @@ design-dependent parts once:
   on span, taper, twists and slipstream edges only (``mdo.wing``);
 * the propeller wakes: the blade-passage-averaged wake's influence at the wing's
   control points, per rotor (``mdo.wake``);
-* the mass build-up residual ``TOGW = sum(terms(TOGW, design))`` (``mass.py``).
+* the mass build-up residual ``TOGW = sum(terms(TOGW, design))`` (``mass.py``), each lifting
+  wing's spar caps and webs sized for strength and stiffness (``wing_structure.py``).
 
 At the mission's K nodes (``evaluate``), with the body angle, rotor speed, BEMT
 inflow angles and pack current as unknowns:
@@ -84,7 +85,7 @@ from .base import G0, NodeEvaluation, Output, ResidualGroup, State, Unknown
 from .config import VehicleConfig, WingConfig, disks_in_one_plane
 from .mass import MassDesign, solve_togw, total_mass
 from .rotor_group import RotorGroupModel, section_name
-from .wing_structure import wing_box_breakdown
+from .wing_structure import strength_sized_tip_deflection
 
 __all__ = ["Aircraft", "DesignBounds"]
 
@@ -477,8 +478,9 @@ class Aircraft(AirframeDragMixin):
             dw = self.design["wings"][w.name]
             problem.output(f"{w.name}.aspect_ratio", dw["span"] ** 2 / w.area_m2, unit="-", summary=True)
             if ws is not None:
-                box = wing_box_breakdown(ws, w.area_m2, dw["span"], dw["taper"], w.thickness_to_chord, 1.0, 1.0)
-                problem.output(f"{w.name}.strength_sized_tip_deflection", box["strength_tip_deflection_fraction"],
+                problem.output(f"{w.name}.strength_sized_tip_deflection",
+                               strength_sized_tip_deflection(ws, w.area_m2, dw["span"], dw["taper"],
+                                                             w.thickness_to_chord),
                                unit="of semispan", summary=True)
 
     def _lattice(self, surfaces, S_ref, lift_velocity="local"):

@@ -75,7 +75,8 @@ import numpy as np
 from ..core.errors import InputError, check_range
 from ..core.smooth import sigmoid, smooth_abs, smooth_max, softplus
 
-__all__ = ["WingStructure", "bending_material_kg", "wing_box_breakdown", "elliptic_shear_moment"]
+__all__ = ["WingStructure", "bending_material_kg", "wing_box_breakdown", "strength_sized_tip_deflection",
+           "elliptic_shear_moment"]
 
 G0 = 9.80665
 
@@ -126,45 +127,60 @@ def bending_material_kg(ws: WingStructure, area_m2, span_m, taper, thickness_to_
                               point_masses)["total_kg"]
 
 
+def _stations(ws: WingStructure):
+    """Gauss-Legendre stations ``u = y/s`` in (0, 1) and their weights."""
+    x, w = np.polynomial.legendre.leggauss(ws.quadrature_points)
+    return 0.5 * (x + 1.0), 0.5 * w
+
+
+def _box_depth(ws: WingStructure, area_m2, span_m, taper, thickness_to_chord, u):
+    """Depth h (m) of the box at ``u``: ``k_box (t/c) c(u)`` on the trapezoid of ``area_m2``."""
+    c_root = 2.0 * area_m2 / (span_m * (1.0 + taper))
+    return ws.box_depth_fraction * thickness_to_chord * c_root * (1.0 - (1.0 - taper) * u)
+
+
+def strength_sized_tip_deflection(ws: WingStructure, area_m2, span_m, taper, thickness_to_chord):
+    """Limit-load tip deflection over the semispan of caps sized for strength alone:
+    ``s int_0^1 (1-u) 2 sigma / (FS E h) du`` (S4's curvature; geometry only, no load)."""
+    u_all, w_all = _stations(ws)
+    total = 0.0
+    for u, wq in zip(u_all, w_all):
+        h = _box_depth(ws, area_m2, span_m, taper, thickness_to_chord, u)
+        total = total + wq * (1.0 - u) * 2.0 * ws.cap_stress_Pa / (ws.factor_of_safety * ws.youngs_modulus_Pa * h)
+    return 0.5 * span_m * total
+
+
 def wing_box_breakdown(ws: WingStructure, area_m2, span_m, taper, thickness_to_chord, load_factor,
                        design_lift_N, point_masses=()) -> dict:
     """The wing box of :func:`bending_material_kg` term by term (kg, non-optimum factor in):
     ``caps_kg`` (S4), ``strength_caps_kg`` (S3's caps alone), ``webs_kg``, ``total_kg``, and
-    ``strength_tip_deflection_fraction``: the limit-load tip deflection of the strength-sized
-    caps over the semispan (what S4's stiffness criterion compares with its limit)."""
+    ``strength_tip_deflection_fraction`` (:func:`strength_sized_tip_deflection`, what S4's
+    stiffness criterion compares with its limit)."""
     s = span_m / 2.0
-    c_root = 2.0 * area_m2 / (span_m * (1.0 + taper))
-    x, w = np.polynomial.legendre.leggauss(ws.quadrature_points)
-    u_all, w_all = 0.5 * (x + 1.0), 0.5 * w
+    u_all, w_all = _stations(ws)
     V_root, M_root = elliptic_shear_moment(0.0, 0.5 * load_factor * design_lift_N, s)
     width = ws.relief_width_fraction * s
-    strength, g, webs, h_all, defl = [], [], 0.0, [], 0.0
+    strength, g, webs = [], [], 0.0
     for u, wq in zip(u_all, w_all):
         V, M = elliptic_shear_moment(u, 0.5 * load_factor * design_lift_N, s)
         for m_i, y_i in point_masses:
             # softplus -> max(0, y_i - y) (the relieving moment's arm); sigmoid -> the shear's step
             M = M - load_factor * G0 * m_i * softplus(y_i - u * s, width)
             V = V - load_factor * G0 * m_i * sigmoid(y_i - u * s, width)
-        h = ws.box_depth_fraction * thickness_to_chord * c_root * (1.0 - (1.0 - taper) * u)
+        h = _box_depth(ws, area_m2, span_m, taper, thickness_to_chord, u)
         M_abs = smooth_abs(M, 1e-6 * M_root)
         strength.append(M_abs / (ws.cap_stress_Pa * h))                    # one cap's area, S3
         g.append(((1.0 - u) * M_abs / ws.factor_of_safety) ** 0.5 / h)   # S4's g at limit load
         webs = webs + wq * smooth_abs(V, 1e-6 * V_root) / ws.web_stress_Pa
-        defl = defl + wq * (1.0 - u) * 2.0 * ws.cap_stress_Pa / (ws.factor_of_safety * ws.youngs_modulus_Pa * h)
-    caps = 0.0
-    strength_caps = 0.0
+    strength_caps = sum(wq * a_s for wq, a_s in zip(w_all, strength))
     if ws.max_tip_deflection_fraction is None:
-        lam = None
-    else:
+        caps = strength_caps
+    else:   # S4: lambda = 2 s G / (E f), each station's cap the larger of the two (smooth, 1 % of their sum)
         G = sum(wq * gi for wq, gi in zip(w_all, g))
         lam = 2.0 * s * G / (ws.youngs_modulus_Pa * ws.max_tip_deflection_fraction)
-    for wq, a_s, gi in zip(w_all, strength, g):
-        strength_caps = strength_caps + wq * a_s
-        if lam is None:
-            caps = caps + wq * a_s
-        else:
-            a_k = lam * gi
-            caps = caps + wq * smooth_max(a_s, a_k, 0.01 * (a_s + a_k))
+        caps = sum(wq * smooth_max(a_s, lam * gi, 0.01 * (a_s + lam * gi)) for wq, a_s, gi in zip(w_all, strength, g))
     k = ws.non_optimum_factor * 2.0 * ws.density_kgpm3 * s
     return {"caps_kg": k * 2.0 * caps, "strength_caps_kg": k * 2.0 * strength_caps, "webs_kg": k * webs,
-            "total_kg": k * (2.0 * caps + webs), "strength_tip_deflection_fraction": s * defl}
+            "total_kg": k * (2.0 * caps + webs),
+            "strength_tip_deflection_fraction": strength_sized_tip_deflection(ws, area_m2, span_m, taper,
+                                                                              thickness_to_chord)}
