@@ -129,6 +129,28 @@ def test_baseline_mass_is_raymers_and_the_lift_share_moves_it():
     assert "bending material" in mass_table_markdown(bend, d)
 
 
+def test_the_calibration_scales_the_regressions_level_not_the_bending_physics():
+    """A calibrated airframe keeps its calibrated baseline wing, but stretching the wing costs
+    the same bending material whatever the calibration (issue 17: calibration only where a
+    regression is known to be off)."""
+    W = 2800.0
+
+    def wing_mass_and_slope(f_cal):
+        cfg = replace(ttw(), mass_inputs={**ttw().mass_inputs, "airframe_calibration": f_cal})
+        d = MassDesign.baseline(cfg)
+        name = cfg.lifting_wings[0].name
+        m0 = float(mass_terms(cfg, W, d)[f"wing: {name}"])
+        d.wing_span_m[name] *= 1.2
+        return cfg, m0, float(mass_terms(cfg, W, d)[f"wing: {name}"]) - m0
+    _, _, slope_raw = wing_mass_and_slope(1.0)
+    assert slope_raw > 1.0
+    for f_cal in (0.7, 1.16):
+        cfg, m0, slope = wing_mass_and_slope(f_cal)
+        raymer = replace(cfg, wing_structure=None)
+        assert solve_togw(cfg) == pytest.approx(solve_togw(raymer), rel=1e-9)   # the level: calibrated
+        assert slope == pytest.approx(slope_raw, rel=1e-9)                      # the physics: not scaled
+
+
 def test_a_structure_heavier_than_the_regression_is_refused():
     with pytest.raises(InputError, match="wing_structure"):
         solve_togw(replace(ga2p(), wing_structure=WingStructure(cap_stress_Pa=20e6)))

@@ -137,13 +137,15 @@ def mass_terms(cfg: VehicleConfig, togw_kg, design: MassDesign | None = None) ->
     nz_w = cfg.ultimate_load_factor * W_lb
     q = _q_cruise_psf(cfg)
     rotors = _rotor_masses(cfg, d)
-    terms = {}
+    f_cal = mi.get("airframe_calibration", 1.0)
+    terms, calibrated = {}, {}   # calibrated: terms that already carry f_cal (the physics-based wings)
     for w in cfg.lifting_wings:
         span, taper = d.wing_span_m.get(w.name, w.span_m), d.wing_taper.get(w.name, w.taper)
         if cfg.wing_structure is None:
             terms[f"wing: {w.name}"] = _wing_lb(w, span, taper, nz_w, q) * u.LB
         else:
-            terms[f"wing: {w.name}"] = _wing_secondary_kg(cfg, w.name) + _wing_bending_kg(
+            # the calibration scales the regression's level only, not the bending physics
+            calibrated[f"wing: {w.name}"] = _wing_secondary_kg(cfg, w.name) + _wing_bending_kg(
                 cfg, w, span, taper, d.design_lift_N(cfg, w, togw_kg), _relief_masses(cfg, d, w, span, rotors))
     for w in cfg.horizontal_tails:
         terms[f"horizontal tail: {w.name}"] = _htail_lb(w, nz_w, q) * u.LB
@@ -175,12 +177,13 @@ def mass_terms(cfg: VehicleConfig, togw_kg, design: MassDesign | None = None) ->
         if any(cfg.wing(wn).tilting for wn in g.wings):
             tilting_mass = tilting_mass + m_motor + m_prop
     if cfg.kind == "tilt_wing":
-        wings_mass = sum(v for k, v in terms.items() if k.startswith("wing:"))
+        wings_mass = sum(v for k, v in terms.items() if k.startswith("wing:")) \
+            + sum(calibrated.values()) / f_cal
         terms["tilt mechanism"] = ASSUMPTIONS["tilt_mechanism_fraction"] * (tilting_mass + wings_mass)
-    f_cal = mi.get("airframe_calibration", 1.0)
     if f_cal != 1.0:
         for k in list(terms):
             terms[k] = f_cal * terms[k]
+    terms = {**calibrated, **terms}
     b = cfg.battery
     terms[f"battery ({b.cells_series}s x {b.cells_parallel}p, packaged x {b.packaging_factor:g})"] = b.mass_kg
     terms[f"payload ({cfg.passengers} passengers)"] = cfg.passengers * cfg.passenger_mass_kg
@@ -228,9 +231,10 @@ _SECONDARY_CACHE: dict = {}
 def _wing_secondary_kg(cfg: VehicleConfig, wing_name: str) -> float:
     """The wing mass that the bending material does not explain (skins beyond the caps' need,
     ribs, leading and trailing edges, controls; it follows the area, which the design holds):
-    Raymer's Eq. 15.46 less the bending material, both of the baseline design at the baseline
-    gross weight.  The level is the regression's, the response to span, taper, thickness and
-    lift share the bending physics' (``mdo.vehicle.wing_structure``)."""
+    Raymer's Eq. 15.46 times the airframe calibration, less the bending material, both of the
+    baseline design at the baseline gross weight.  The level is the calibrated regression's (the
+    baseline wing is what it was); the response to span, taper, thickness and lift share is the
+    bending physics' (``mdo.vehicle.wing_structure``), which no calibration scales."""
     key = (repr(cfg), wing_name)
     if key not in _SECONDARY_CACHE:
         raymer = replace(cfg, wing_structure=None)
@@ -241,11 +245,13 @@ def _wing_secondary_kg(cfg: VehicleConfig, wing_name: str) -> float:
         m_raymer = float(_wing_lb(w, w.span_m, w.taper, nz_w, _q_cruise_psf(cfg)) * u.LB)
         m_bend = float(_wing_bending_kg(cfg, w, w.span_m, w.taper, d0.design_lift_N(cfg, w, W0),
                                         _relief_masses(cfg, d0, w, w.span_m, _rotor_masses(cfg, d0))))
-        if m_bend >= m_raymer:
+        m_level = cfg.mass_inputs.get("airframe_calibration", 1.0) * m_raymer
+        if m_bend >= m_level:
             raise InputError(f"wing_structure ({wing_name})",
-                             f"bending material {m_bend:.1f} kg at the baseline must stay below Raymer's "
-                             f"wing {m_raymer:.1f} kg (a lighter construction, or the regression alone)")
-        _SECONDARY_CACHE[key] = m_raymer - m_bend
+                             f"bending material {m_bend:.1f} kg at the baseline must stay below the "
+                             f"(calibrated) Raymer wing {m_level:.1f} kg (a lighter construction, or the "
+                             "regression alone)")
+        _SECONDARY_CACHE[key] = m_level - m_bend
     return _SECONDARY_CACHE[key]
 
 
@@ -290,8 +296,9 @@ def mass_table_markdown(cfg: VehicleConfig, design: MassDesign | None = None) ->
         ref = cfg.togw_reference_kg
         lines += ["", f"Paper (Table 1): {ref / u.LB:.0f} lb = {ref:.1f} kg; "
                   f"difference {100 * (W - ref) / ref:+.2f} %."]
-    lines += ["", f"Airframe calibration factor {f_cal:g} multiplies every term except battery and "
-              f"payload. Without it the regressions give TOGW = {W_raw:.1f} kg = {W_raw / u.LB:.0f} lb"
+    lines += ["", f"Airframe calibration factor {f_cal:g} multiplies every regression term (not the battery, "
+              "the payload or the wings' bending material, which is physics: a calibrated wing keeps its "
+              f"baseline mass and responds to the design by its bending material alone). Without it the regressions give TOGW = {W_raw:.1f} kg = {W_raw / u.LB:.0f} lb"
               + (f" ({100 * (W_raw - cfg.togw_reference_kg) / cfg.togw_reference_kg:+.1f} % from Table 1)."
                  if cfg.togw_reference_kg else ".")]
     lines += ["", "Sources: Raymer 6th ed. Sec. 15.3.3 (GA structure and systems), NDARC (motors), "
