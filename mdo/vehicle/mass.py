@@ -137,16 +137,18 @@ def mass_terms(cfg: VehicleConfig, togw_kg, design: MassDesign | None = None) ->
     nz_w = cfg.ultimate_load_factor * W_lb
     q = _q_cruise_psf(cfg)
     rotors = _rotor_masses(cfg, d)
+    # The calibration scales the regressions.  A wing with a WingStructure is already at the
+    # calibrated level (its area-held part, ``_wing_secondary_kg``); its bending material is physics.
     f_cal = mi.get("airframe_calibration", 1.0)
-    terms, calibrated = {}, {}   # calibrated: terms that already carry f_cal (the physics-based wings)
+    wings = {}
     for w in cfg.lifting_wings:
         span, taper = d.wing_span_m.get(w.name, w.span_m), d.wing_taper.get(w.name, w.taper)
         if cfg.wing_structure is None:
-            terms[f"wing: {w.name}"] = _wing_lb(w, span, taper, nz_w, q) * u.LB
+            wings[f"wing: {w.name}"] = f_cal * _wing_lb(w, span, taper, nz_w, q) * u.LB
         else:
-            # the calibration scales the regression's level only, not the bending physics
-            calibrated[f"wing: {w.name}"] = _wing_secondary_kg(cfg, w.name) + _wing_bending_kg(
+            wings[f"wing: {w.name}"] = _wing_secondary_kg(cfg, w.name) + _wing_bending_kg(
                 cfg, w, span, taper, d.design_lift_N(cfg, w, togw_kg), _relief_masses(cfg, d, w, span, rotors))
+    terms = {}      # the regressions, before the calibration
     for w in cfg.horizontal_tails:
         terms[f"horizontal tail: {w.name}"] = _htail_lb(w, nz_w, q) * u.LB
     for w in cfg.fins:
@@ -176,14 +178,12 @@ def mass_terms(cfg: VehicleConfig, togw_kg, design: MassDesign | None = None) ->
             terms[f"nacelles: {g.name} ({g.count})"] = m_nac
         if any(cfg.wing(wn).tilting for wn in g.wings):
             tilting_mass = tilting_mass + m_motor + m_prop
-    if cfg.kind == "tilt_wing":
-        wings_mass = sum(v for k, v in terms.items() if k.startswith("wing:")) \
-            + sum(calibrated.values()) / f_cal
-        terms["tilt mechanism"] = ASSUMPTIONS["tilt_mechanism_fraction"] * (tilting_mass + wings_mass)
     if f_cal != 1.0:
-        for k in list(terms):
-            terms[k] = f_cal * terms[k]
-    terms = {**calibrated, **terms}
+        terms = {k: f_cal * v for k, v in terms.items()}
+    terms = {**wings, **terms}
+    if cfg.kind == "tilt_wing":   # a fraction of what tilts: the wings and the rotors' motors and propellers
+        terms["tilt mechanism"] = ASSUMPTIONS["tilt_mechanism_fraction"] * (
+            f_cal * tilting_mass + sum(wings.values()))
     b = cfg.battery
     terms[f"battery ({b.cells_series}s x {b.cells_parallel}p, packaged x {b.packaging_factor:g})"] = b.mass_kg
     terms[f"payload ({cfg.passengers} passengers)"] = cfg.passengers * cfg.passenger_mass_kg
@@ -298,7 +298,8 @@ def mass_table_markdown(cfg: VehicleConfig, design: MassDesign | None = None) ->
                   f"difference {100 * (W - ref) / ref:+.2f} %."]
     lines += ["", f"Airframe calibration factor {f_cal:g} multiplies every regression term (not the battery, "
               "the payload or the wings' bending material, which is physics: a calibrated wing keeps its "
-              f"baseline mass and responds to the design by its bending material alone). Without it the regressions give TOGW = {W_raw:.1f} kg = {W_raw / u.LB:.0f} lb"
+              "baseline mass and responds to the design by its bending material alone). Without it the "
+              f"regressions give TOGW = {W_raw:.1f} kg = {W_raw / u.LB:.0f} lb"
               + (f" ({100 * (W_raw - cfg.togw_reference_kg) / cfg.togw_reference_kg:+.1f} % from Table 1)."
                  if cfg.togw_reference_kg else ".")]
     lines += ["", "Sources: Raymer 6th ed. Sec. 15.3.3 (GA structure and systems), NDARC (motors), "

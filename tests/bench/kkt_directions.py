@@ -42,7 +42,7 @@ def _csc(M) -> sp.csc_matrix:
 
 
 def kkt_at_solution(problem, active: float):
-    """(K, n): the reduced KKT matrix at the problem's converged point and the number of x."""
+    """(K, n, m): the reduced KKT matrix at the problem's converged point, the number of x and of active rows."""
     opti = problem.opti
     x = np.asarray(opti.debug.value(opti.x)).ravel()
     lam = np.asarray(opti.debug.value(opti.lam_g)).ravel()
