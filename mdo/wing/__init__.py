@@ -13,6 +13,7 @@ from .camber import camber_line, known_camber_names
 from .drag import Body, body_drag, crossflow_normal_force, profile_drag, section_cd, skin_friction
 from .geometry import (Params, Section, Surface, aspect_ratio, constant_area, mean_aerodynamic_chord,
                        planform_area, trapezoid)
+from .viscous import lattice_zero_lift_angles, shift_velocity, solve_viscous, viscous_residual
 from .vlm import VLM
 
 __all__ = [
@@ -20,5 +21,5 @@ __all__ = [
     "mean_aerodynamic_chord", "aspect_ratio", "Params", "camber_line", "known_camber_names",
     "Body", "body_drag", "crossflow_normal_force", "profile_drag", "section_cd", "skin_friction",
     "DragBuildup", "SurfaceComponent", "BodyComponent", "CoolingDrag", "Transition",
-    "composite_skin_friction",
+    "composite_skin_friction", "lattice_zero_lift_angles", "shift_velocity", "solve_viscous", "viscous_residual",
 ]
