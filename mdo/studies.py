@@ -30,6 +30,7 @@ AIRCRAFT_OPTIONS = {
     "allow_regeneration": (bool,),
     "wake_samples": (int, 1, 15),
     "trim": (bool,),
+    "wing_viscous": (bool,),
 }
 
 #: the free-trajectory options of a problem that offers them (problems/ga2p.py, ga8p.py)

@@ -72,3 +72,15 @@ def test_graf_wing_through_stall_against_the_measured_lift():
     for a in (13, 14):
         assert rows[a]["converged"] and rows[a]["CL_model"] < top["CL"]
         assert rows[a]["CL_model"] == pytest.approx(rows[a]["CL_measured"], rel=0.08)
+
+
+def test_the_aircraft_option_replaces_the_post_stall_strips():
+    """``Aircraft(wing_viscous=True)`` carries the shifts; asking for the one-pass post-stall
+    strips as well is refused, naming the field."""
+    from mdo.core.errors import InputError
+    from mdo.vehicle.aircraft import Aircraft
+    from mdo.vehicle.catalog import ttw
+    assert Aircraft(ttw(), wing_viscous=True).wing_stall is False
+    assert Aircraft(ttw()).wing_stall is True
+    with pytest.raises(InputError, match="wing_stall"):
+        Aircraft(ttw(), wing_viscous=True, wing_stall=True)

@@ -86,6 +86,7 @@ from .config import VehicleConfig, WingConfig, disks_in_one_plane
 from .mass import MassDesign, solve_togw, total_mass
 from .rotor_group import RotorGroupModel, section_name
 from .wing_structure import strength_sized_tip_deflection
+from .viscous_wing import viscous_rows, viscous_unknowns, viscous_upwash
 
 __all__ = ["Aircraft", "DesignBounds"]
 
@@ -175,7 +176,7 @@ class Aircraft(AirframeDragMixin):
                  bounds: DesignBounds | None = None,
                  positions_free: bool | None = None, design_point_constraints: bool = True,
                  wing_stall: bool | None = None, slipstream_breaks: bool = False, wake_samples: int = 5,
-                 pitch: str = "control", tilt: str = "schedule", trim: bool = True):
+                 pitch: str = "control", tilt: str = "schedule", trim: bool = True, wing_viscous: bool = False):
         self._check_options(config, free, coupling, mass_model, tip_mach_limit, swirl_recovery, wake_samples,
                             stall_margin_cl, max_span_m, pitch, tilt, trim)
         self.config = config
@@ -192,8 +193,12 @@ class Aircraft(AirframeDragMixin):
         self.allow_regeneration = bool(allow_regeneration)
         self.swirl_recovery = swirl_recovery
         self.max_span_m = None if max_span_m is None else float(max_span_m)
-        # post-stall strips (tilt-wing transitions); the linear lattice elsewhere
-        self.wing_stall = (config.kind == "tilt_wing") if wing_stall is None else bool(wing_stall)
+        # strips on their section polars (mdo.vehicle.viscous_wing), or the linear lattice with the
+        # one-pass post-stall strips of a tilt-wing's transitions
+        self.wing_viscous = bool(wing_viscous)
+        if self.wing_viscous and wing_stall:
+            raise InputError("wing_stall", "the viscous correction (wing_viscous=True) replaces the post-stall strips")
+        self.wing_stall = (config.kind == "tilt_wing" and not self.wing_viscous) if wing_stall is None else bool(wing_stall)
         self.slipstream_breaks = bool(slipstream_breaks)
         # wake velocity averaged over this many points across each strip (1: at the
         # control point; see the class docstring and tests/bench/position_sweep.py)
@@ -553,6 +558,7 @@ class Aircraft(AirframeDragMixin):
         if self.tilt == "control":   # the wing-mounted angle where a segment lets it be a control
             out.append(self._tilt_unknown())
         out += trim_unknowns(self)
+        out += viscous_unknowns(self)
         # gear/flap deployment: a control only where a segment allows a drag device
         out.append(Unknown("drag_device_deployment", unit="-", scale=1.0, lower=0.0, upper=1.0,
                            description="gear/flap deployment on approach (fraction of drag_device_area_m2)",
@@ -646,6 +652,8 @@ class Aircraft(AirframeDragMixin):
         if self.limits_on:
             residuals += operating_limits(self, nodes, rot, po, aero, env)
         residuals += wing_design_lift_rows(self, nodes, aero, env)
+        residuals += viscous_rows(self, aero["vlm"], unknowns, rho, mu, V / a_s,
+                                  _num(nodes.parameters.get("flap_deflection", _row(0.0, K))).ravel())
         out = node_outputs(self, nodes, rot, aero, po, env)
         dist = {"strip_cl": Output(aero["vlm"]["cl"], "-", "section lift coefficient of each lattice strip "
                                                          "(with the wakes)")}
@@ -699,6 +707,9 @@ class Aircraft(AirframeDragMixin):
         if self.trim_surfaces:
             v_cp = trim_upwash(self, unknowns, v_cp, V)
         v_b = v_rest if self.coupling == "swirl" else None
+        if self.wing_viscous:   # the strips' angle shifts: in the tangency only, not in the forces
+            v_b = v_cp if v_b is None else v_b
+            v_cp = viscous_upwash(self, unknowns, v_cp, V)
         mach = V / a_s
         wing_alpha = alpha + wma if self.config.kind == "tilt_wing" else alpha
         r = self.vlm.solve(wing_alpha, V, rho=rho, mach=mach, v_ext=v_cp, v_ext_bound=v_b)
