@@ -652,11 +652,14 @@ class Aircraft(AirframeDragMixin):
         if self.limits_on:
             residuals += operating_limits(self, nodes, rot, po, aero, env)
         residuals += wing_design_lift_rows(self, nodes, aero, env)
-        residuals += viscous_rows(self, aero["vlm"], unknowns, rho, mu, V / a_s,
+        residuals += viscous_rows(self, aero["vlm"], unknowns, rho, mu, V, V / a_s,
                                   _num(nodes.parameters.get("flap_deflection", _row(0.0, K))).ravel())
         out = node_outputs(self, nodes, rot, aero, po, env)
         dist = {"strip_cl": Output(aero["vlm"]["cl"], "-", "section lift coefficient of each lattice strip "
                                                          "(with the wakes)")}
+        if self.wing_viscous:
+            dist["strip_viscous_shift"] = Output(unknowns["wing_viscous_shift"], "rad",
+                                                 "each strip's angle shift of the viscous correction")
         return NodeEvaluation(mass_kg=self.togw, force_along_path_N=F_t, force_normal_N=F_n, residuals=residuals,
                               force_scale_N=self.togw_baseline_kg * G0,
                               state_derivatives={"state_of_charge": po["soc_rate_per_s"]}, outputs=out,

@@ -87,21 +87,25 @@ def _loading(vehicle, mission, solution, k):
     r_off = vlm.solve(alpha, V)
     cl_off = _val(solution, r_off["cl"]).ravel()
     surf = [vlm.surfaces[i].name for i in vlm.strip_surface]
-    return y, chord, cl_on, cl_off, surf
+    dist = mission.evaluation.distributions
+    shift = (_val(solution, dist["strip_viscous_shift"].expr)[:, k] if "strip_viscous_shift" in dist else None)
+    return y, chord, cl_on, cl_off, surf, shift
 
 
 def _write_loading(vehicle, mission, solution, out: Path):
     k = cruise_node(mission)
-    y, chord, cl_on, cl_off, surf = _loading(vehicle, mission, solution, k)
+    y, chord, cl_on, cl_off, surf, shift = _loading(vehicle, mission, solution, k)
     b = {n: float(_val(solution, w["span"])) for n, w in vehicle.design["wings"].items()}
     c_ref = vehicle.config.main_wing.mean_aerodynamic_chord_m
     with open(out / "loading.csv", "w", newline="") as f:
         wr = csv.writer(f)
-        wr.writerow(["surface", "y_m", "y_over_semispan", "chord_m", "cl_props_on", "cl_props_off", "ccl_over_cref"])
+        wr.writerow(["surface", "y_m", "y_over_semispan", "chord_m", "cl_props_on", "cl_props_off", "ccl_over_cref"]
+                    + (["viscous_shift_deg"] if shift is not None else []))
         for i in range(y.size):
             semi = b.get(surf[i], 2 * max(abs(y[j]) for j in range(y.size) if surf[j] == surf[i])) / 2
             wr.writerow([surf[i], f"{y[i]:.5f}", f"{y[i] / semi:.5f}", f"{chord[i]:.5f}", f"{cl_on[i]:.6f}",
-                         f"{cl_off[i]:.6f}", f"{chord[i] * cl_on[i] / c_ref:.6f}"])
+                         f"{cl_off[i]:.6f}", f"{chord[i] * cl_on[i] / c_ref:.6f}"]
+                        + ([f"{math.degrees(shift[i]):.4f}"] if shift is not None else []))
     return k
 
 

@@ -36,7 +36,7 @@ import numpy as np
 
 from .camber import camber_line
 
-__all__ = ["lattice_zero_lift_angles", "shift_velocity", "viscous_residual", "solve_viscous"]
+__all__ = ["lattice_zero_lift_angles", "shift_velocity", "effective_angle", "viscous_residual", "solve_viscous"]
 
 
 def lattice_zero_lift_angles(vlm) -> np.ndarray:
@@ -80,6 +80,11 @@ def shift_velocity(vlm, shift, V):
     return tuple(ca.repmat(n[i, :].T, 1, K) * per_panel for i in range(3))
 
 
+def effective_angle(cl, shift, alpha0, mach):
+    """(V2), elementwise (numbers, NumPy or CasADi): alpha_e = beta cl / (2 pi) + alpha_0 - shift."""
+    return ca.sqrt(1 - mach * mach) * cl / (2 * math.pi) + alpha0 - shift
+
+
 def viscous_residual(vlm, r, shift, section_cl, mach, alpha0=None):
     """(V1) for every strip: (R n_strips x K, alpha_e n_strips x K).
 
@@ -91,10 +96,9 @@ def viscous_residual(vlm, r, shift, section_cl, mach, alpha0=None):
     K = shift.shape[1]
     if alpha0 is None:
         alpha0 = lattice_zero_lift_angles(vlm)
-    beta = ca.sqrt(1 - _row(mach, K) ** 2)
     cl = r["cl_local"]
     S = vlm.n_strips
-    alpha_e = ca.repmat(beta, S, 1) * cl / (2 * math.pi) + ca.repmat(ca.DM(alpha0), 1, K) - shift
+    alpha_e = effective_angle(cl, shift, ca.repmat(ca.DM(alpha0), 1, K), ca.repmat(_row(mach, K), S, 1))
     return cl - section_cl(alpha_e), alpha_e
 
 
