@@ -11,8 +11,8 @@ charge left at the end), in one IPOPT solve.  ``--analysis`` freezes the design 
 Table 3's initial values (the motors are still sized; the tip-Mach limit is reported
 but not enforced: the frozen blade violates it in the climb).
 
-Options (``-o KEY=VALUE``): ``nodes`` per segment (6), ``wing_viscous`` (false; true: every lattice strip on its
-section polar, mdo.vehicle.viscous_wing), ``trim`` (true: pitch trim with the
+Options (``-o KEY=VALUE``): ``nodes`` per segment (6), ``wing_viscous`` (true: every lattice strip on its
+section polar, mdo.vehicle.viscous_wing; false: the linear lattice), ``trim`` (true: pitch trim with the
 stabilator, the CG held by the static margin; mdo.vehicle.balance), ``cruise_distance_nmi`` (50),
 ``reserve_cruise_distance_nmi`` (5), ``cruise_altitude_ft`` (2500), ``cruise_speed_mph``
 (175), ``cells_series`` (120) and ``cells_parallel`` (80) of the battery, ``n_stations``
@@ -67,7 +67,7 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
           motor_model: str = "pmsm", sections: str = "as_defined", leakage_fraction: float | None = None,
           nacelle_slipstream: bool = True, cooling_drag: bool = True, airframe_calibration: float | None = None,
           wing_mass: str = "bending", max_tip_deflection_pct: float | None = None,
-          trim: bool = True, wing_viscous: bool = False):
+          trim: bool = True, wing_viscous: bool | None = None):
     p = Problem("ga2p", "GA-2P whole-mission optimization (Clarke et al. Eq. 7)")
     cfg = ga2p(rotation)
     cfg = replace(cfg, battery=replace(cfg.battery, cells_series=cells_series, cells_parallel=cells_parallel),

@@ -38,7 +38,7 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
           motor_model: str = "pmsm", sections: str = "as_defined", leakage_fraction: float | None = None,
           nacelle_slipstream: bool = True, cooling_drag: bool = True, airframe_calibration: float | None = None,
           wing_mass: str = "bending", max_tip_deflection_pct: float | None = None,
-          trim: bool = True, wing_viscous: bool = False):
+          trim: bool = True, wing_viscous: bool | None = None):
     p = Problem("ga8p", "GA-8P whole-mission optimization (Clarke et al. Eq. 7)")
     cfg = ga8p(rotation)
     cfg = replace(cfg, battery=replace(cfg.battery, cells_series=cells_series, cells_parallel=cells_parallel),

@@ -103,7 +103,7 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 1
           reserve_cruise_distance_nmi: float = 5.0, cruise_altitude_ft: float = 8000.0,
           cruise_speed_mph: float = 172.0, cells_parallel: int = 40, coupling: str = "local",
           wing_strips: int = 20, n_stations: int = 12, approach_speed_kn: float = APPROACH_SPEED_MPS / KNOT,
-          trim: bool = True, wing_viscous: bool = False):
+          trim: bool = True, wing_viscous: bool | None = None):
     p = Problem("x57_mod4", "X-57 Maxwell Mod IV whole-mission optimization (two rotor groups)")
     cfg = x57_mod4(cells_parallel, cruise_speed_mph * MPH, cruise_altitude_ft * FT)
     vehicle = Aircraft(cfg, trim=trim, wing_viscous=wing_viscous, free=("rotor", "wing"), n_stations=n_stations, wing_strips=wing_strips,

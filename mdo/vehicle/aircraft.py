@@ -163,6 +163,10 @@ class Aircraft(AirframeDragMixin):
         (``WingConfig.trim_incidence_range_deg``) a control there, the CG a design variable
         held by the static margin (:mod:`mdo.vehicle.balance`); on by default, and inert
         for a vehicle without such a surface (reported as untrimmed).
+    wing_viscous : every lattice strip's lift on its section polar at every node
+        (:mod:`mdo.vehicle.viscous_wing`: an angle shift per strip and node, solved with the
+        mission), so the stall margin reads the section's cl_max; default on for airplanes, off
+        for a tilt-wing (its transitions keep the one-pass post-stall strips, ``wing_stall``).
     Segments may set ``drag_device_area_m2`` (gear/flap drag on approach, a control),
     ``flap_deflection`` (0-1, raises the stall limit of flapped strips) and
     ``<group>.active`` (0: that rotor group stopped/folded there).
@@ -176,7 +180,7 @@ class Aircraft(AirframeDragMixin):
                  bounds: DesignBounds | None = None,
                  positions_free: bool | None = None, design_point_constraints: bool = True,
                  wing_stall: bool | None = None, slipstream_breaks: bool = False, wake_samples: int = 5,
-                 pitch: str = "control", tilt: str = "schedule", trim: bool = True, wing_viscous: bool = False):
+                 pitch: str = "control", tilt: str = "schedule", trim: bool = True, wing_viscous: bool | None = None):
         self._check_options(config, free, coupling, mass_model, tip_mach_limit, swirl_recovery, wake_samples,
                             stall_margin_cl, max_span_m, pitch, tilt, trim)
         self.config = config
@@ -195,6 +199,10 @@ class Aircraft(AirframeDragMixin):
         self.max_span_m = None if max_span_m is None else float(max_span_m)
         # strips on their section polars (mdo.vehicle.viscous_wing), or the linear lattice with the
         # one-pass post-stall strips of a tilt-wing's transitions
+        # on by default for airplanes; a tilt-wing's transitions keep the one-pass post-stall strips
+        # (their wing flies far past stall, where the correction's equations have several roots)
+        if wing_viscous is None:
+            wing_viscous = config.kind != "tilt_wing" and not wing_stall
         self.wing_viscous = bool(wing_viscous)
         if self.wing_viscous and wing_stall:
             raise InputError("wing_stall", "the viscous correction (wing_viscous=True) replaces the post-stall strips")
