@@ -35,8 +35,8 @@ Layout of ``Mission``: kinematics (each segment's speeds, rates, durations), ``b
 its named steps in the order it calls them (``_add_durations``, ``_add_body_angle``,
 ``_add_unknowns``, ``_add_states``, ``_add_equations_of_motion``, ``_add_vehicle_residuals``,
 ``_add_collocation``, ``_add_energy_and_outputs``), the pieces they share (guesses, defect
-matrices, masked unknowns, control continuity), and the results (``report_rows``,
-``report``).  The free-trajectory envelope lives in ``trajectory.py``, segment kinds in
+matrices), and the results (``report_rows``, ``report``); the unknowns that exist only at some
+nodes and the controls' continuity and rate limits are in ``controls.py``.  The free-trajectory envelope lives in ``trajectory.py``, segment kinds in
 ``segments.py``, Table 5's profiles in ``profiles.py``.
 """
 from __future__ import annotations
@@ -51,6 +51,7 @@ from ..core.collocation import Collocation
 from ..core.errors import InputError
 from ..core.units import KWH, MINUTE, NMI
 from ..vehicle.base import G0, NodeConditions, Output
+from .controls import NodeControlsMixin
 from .segments import Kinematics, Segment
 from .trajectory import Envelope, FreeSpeedRows, trajectory_modes
 
@@ -90,7 +91,7 @@ def _row(x) -> ca.DM:
     return ca.DM(np.asarray(x, dtype=float).reshape(1, -1))
 
 
-class Mission:
+class Mission(NodeControlsMixin):
     """A chain of segments flown by one vehicle, transcribed by CGL collocation.
 
     Parameters
@@ -558,81 +559,6 @@ class Mission:
                     seg_f = fval[si, g.node0:g.node0 + g.n]
                     x[g.state0 + 1:g.state0 + g.n] = x[g.state0] + T * (Collocation(g.n).I @ seg_f)[1:]
                 problem.set_initial(f"{self.prefix}{st.name}", x.reshape(1, -1))
-
-    def _masked_unknown(self, problem, u, params, init, col):
-        """An unknown that exists only at some nodes: where the segment parameter
-        ``u.only_where`` is > 0 (zeros elsewhere: a free variable with no effect would
-        leave the NLP singular), and, for ``u.hold_where_uncollocated``, not at a node
-        whose derivative the collocation ignores (it takes the next node's value there)."""
-        K, rows = self.K, int(u.rows)
-        if u.only_where is not None and u.only_where not in params:
-            raise InputError(f"unknown {u.name!r}.only_where", f"a segment parameter of the vehicle, got "
-                                                               f"{u.only_where!r}")
-        on = np.ones(K, bool) if u.only_where is None else \
-            np.asarray(params[u.only_where], float).ravel() * np.ones(K) > 0.0
-        owner = np.arange(K)            # the node whose variable each node reads
-        if u.hold_where_uncollocated:   # a segment has >= 2 nodes: node0 + 1 is in the same one
-            for k in self._uncollocated_nodes():
-                if on[k + 1]:
-                    owner[k] = k + 1
-        active = np.flatnonzero(on)
-        own = [int(k) for k in active if owner[k] == k]
-        if not own:
-            return ca.DM.zeros(rows, K)
-        n = len(own)
-        var = problem.variable(f"{self.prefix}{u.name}", (rows, n), unit=u.unit,
-                               scale=np.broadcast_to(col(u.scale), (rows, n)),
-                               lower=np.broadcast_to(col(u.lower), (rows, n)),
-                               upper=np.broadcast_to(col(u.upper), (rows, n)),
-                               init=init[:, own], description=u.description,
-                               labels=[self.labels[k] for k in own])
-        index = {k: i for i, k in enumerate(own)}
-        cols = [int(k) for k in active]
-        spread = ca.DM.triplet([index[int(owner[k])] for k in cols], cols, ca.DM.ones(len(cols)), n, K)
-        return ca.densify(ca.mtimes(var, spread))
-
-    def _control_continuity_and_rate(self, problem, u, row, params):
-        """A control that takes over the segment parameter ``u.replaces`` where
-        ``u.only_where`` > 0: equal values at every segment join (the last node of a
-        segment and the first of the next are one instant), against the parameter where a
-        neighbour keeps it prescribed; and |d(control)/dt| <= ``u.max_rate`` at every node
-        of its segments, ``+-(D u)_j / T - max_rate <= 0`` (D the CGL differentiation
-        matrix on s in [0, 1], T the segment's duration)."""
-        if u.only_where is None or int(u.rows) != 1:
-            raise InputError(f"unknown {u.name!r}", "replaces/max_rate need only_where and one row")
-        if u.replaces is not None and u.replaces not in params:
-            raise InputError(f"unknown {u.name!r}.replaces", f"a segment parameter of the vehicle, got "
-                                                             f"{u.replaces!r}")
-        on = np.asarray(params[u.only_where], float).ravel() * np.ones(self.K) > 0.0
-        seg_on = [bool(on[g.node0]) for g in self._segs]
-        if u.replaces is not None:
-            fixed = np.asarray(params[u.replaces], float).ravel() * np.ones(self.K)
-            value = lambda k: row[0, k] if on[k] else float(fixed[k])  # noqa: E731
-            gaps, labels = [], []
-            for i, (a, b) in enumerate(zip(self._segs[:-1], self._segs[1:])):
-                if seg_on[i] or seg_on[i + 1]:
-                    gaps.append(value(b.node0) - value(a.node0 + a.n - 1))
-                    labels.append(f"{a.segment.name}/{b.segment.name}")
-            if gaps:
-                problem.constrain(f"{u.name} continuity", ca.vertcat(*gaps), scale=float(np.max(u.scale)),
-                                  unit=u.unit, labels=labels)
-        if u.max_rate is None:
-            return
-        pieces, labels = [], []
-        for g, is_on in zip(self._segs, seg_on):
-            if not is_on:
-                continue
-            rate = ca.mtimes(row[0, g.node0:g.node0 + g.n], ca.DM(Collocation(g.n).D).T) / g.duration
-            pieces += [rate - u.max_rate, -rate - u.max_rate]
-            labels += [f"{self.labels[g.node0 + j]} {sign}" for sign in ("rising", "falling") for j in range(g.n)]
-        if pieces:
-            problem.constrain(f"{u.name} rate", ca.horzcat(*pieces), kind="<=",
-                              scale=float(u.max_rate), unit=f"{u.unit}/s", labels=labels)
-
-    def _uncollocated_nodes(self) -> list:
-        """Nodes whose state derivative enters no defect: the first node of each segment
-        in the differentiation form (its rows of D start at j = 1); none in the integration form."""
-        return [g.node0 for g in self._segs] if self.state_form == "differentiation" else []
 
     # ------------------------------------------------------------------ results
     def report_rows(self) -> dict:
