@@ -74,13 +74,17 @@ def test_graf_wing_through_stall_against_the_measured_lift():
         assert rows[a]["CL_model"] == pytest.approx(rows[a]["CL_measured"], rel=0.08)
 
 
-def test_the_aircraft_option_replaces_the_post_stall_strips():
-    """``Aircraft(wing_viscous=True)`` carries the shifts; asking for the one-pass post-stall
-    strips as well is refused, naming the field."""
-    from mdo.core.errors import InputError
+def test_a_tilt_wing_flies_the_correction_where_it_is_wing_borne():
+    """Airplanes fly the correction by default; a tilt-wing keeps its post-stall strips, and
+    asked for the correction too it gets it at the nodes of wing-borne segments (stall margin
+    >= 0) while its transitions (negative margin) keep the post-stall strips."""
+    from types import SimpleNamespace
     from mdo.vehicle.aircraft import Aircraft
-    from mdo.vehicle.catalog import ttw
-    assert Aircraft(ttw(), wing_viscous=True).wing_stall is False
-    assert Aircraft(ttw()).wing_stall is True
-    with pytest.raises(InputError, match="wing_stall"):
-        Aircraft(ttw(), wing_viscous=True, wing_stall=True)
+    from mdo.vehicle.catalog import ga2p, ttw
+    a = Aircraft(ga2p())
+    assert a.wing_viscous and not a.wing_stall and a.post_stall_nodes(None, 3) is None
+    assert not Aircraft(ttw()).wing_viscous
+    t = Aircraft(ttw(), wing_viscous=True)
+    assert t.wing_viscous and t.wing_stall
+    nodes = SimpleNamespace(parameters={"stall_margin_cl": np.array([[0.1, -1.0, -1.0, 0.1]])})
+    assert t.post_stall_nodes(nodes, 4).tolist() == [False, True, True, False]

@@ -81,7 +81,7 @@ from ..powertrain import Bus
 from ..wake import influence_sum_parts
 from .aircraft_drag import AirframeDragMixin
 from .aircraft_geometry import AircraftGeometryMixin
-from .aircraft_nodes import _num, _row, node_outputs, operating_limits, wing_design_lift_rows
+from .aircraft_nodes import _num, _row, _stall_margin, node_outputs, operating_limits, wing_design_lift_rows
 from .balance import add_balance, trim_residuals, trim_unknowns, trim_upwash
 from .base import G0, NodeEvaluation, Output, ResidualGroup, State, Unknown
 from .config import VehicleConfig, WingConfig
@@ -167,7 +167,9 @@ class Aircraft(AircraftGeometryMixin, AirframeDragMixin):
     wing_viscous : every lattice strip's lift on its section polar at every node
         (:mod:`mdo.vehicle.viscous_wing`: an angle shift per strip and node, solved with the
         mission), so the stall margin reads the section's cl_max; default on for airplanes, off
-        for a tilt-wing (its transitions keep the one-pass post-stall strips, ``wing_stall``).
+        for a tilt-wing.  With ``wing_stall`` as well (a tilt-wing asked for it), the one-pass
+        post-stall strips apply at the nodes of segments that are not wing-borne (negative
+        ``stall_margin_cl``: the transitions) and the correction at every other node.
     Segments may set ``drag_device_area_m2`` (gear/flap drag on approach, a control),
     ``flap_deflection`` (0-1, raises the stall limit of flapped strips) and
     ``<group>.active`` (0: that rotor group stopped/folded there).
@@ -205,9 +207,9 @@ class Aircraft(AircraftGeometryMixin, AirframeDragMixin):
         if wing_viscous is None:
             wing_viscous = config.kind != "tilt_wing" and not wing_stall
         self.wing_viscous = bool(wing_viscous)
-        if self.wing_viscous and wing_stall:
-            raise InputError("wing_stall", "the viscous correction (wing_viscous=True) replaces the post-stall strips")
-        self.wing_stall = (config.kind == "tilt_wing" and not self.wing_viscous) if wing_stall is None else bool(wing_stall)
+        # with both, the post-stall strips apply where the segment is not wing-borne (a negative
+        # stall margin: a tilt-wing's transitions) and the viscous correction everywhere else
+        self.wing_stall = (config.kind == "tilt_wing") if wing_stall is None else bool(wing_stall)
         self.slipstream_breaks = bool(slipstream_breaks)
         # wake velocity averaged over this many points across each strip (1: at the
         # control point; see the class docstring and tests/bench/position_sweep.py)
@@ -443,6 +445,14 @@ class Aircraft(AircraftGeometryMixin, AirframeDragMixin):
         """Angle of a group's thrust axis above the body x axis: the wing-mounted angle if its wing tilts."""
         return wma if gm.tilting else 0.0 * wma
 
+    def post_stall_nodes(self, nodes, K):
+        """With both the viscous correction and the post-stall strips: the nodes of segments that
+        are not wing-borne (negative ``stall_margin_cl``), where the post-stall strips apply and the
+        shifts are held at zero (K booleans); None otherwise (each model at every node)."""
+        if not (self.wing_viscous and self.wing_stall):
+            return None
+        return _stall_margin(self, nodes, K) < 0.0
+
     def evaluate(self, nodes, unknowns) -> NodeEvaluation:
         if self._problem is None:
             raise RuntimeError("Aircraft.evaluate before setup(problem)")
@@ -478,8 +488,10 @@ class Aircraft(AircraftGeometryMixin, AirframeDragMixin):
         if self.limits_on:
             residuals += operating_limits(self, nodes, rot, po, aero, env)
         residuals += wing_design_lift_rows(self, nodes, aero, env)
+        post = self.post_stall_nodes(nodes, K)
         residuals += viscous_rows(self, aero["vlm"], unknowns, rho, mu, V, V / a_s,
-                                  _num(nodes.parameters.get("flap_deflection", _row(0.0, K))).ravel())
+                                  _num(nodes.parameters.get("flap_deflection", _row(0.0, K))).ravel(),
+                                  on=None if post is None else ~post)
         out = node_outputs(self, nodes, rot, aero, po, env)
         dist = {"strip_cl": Output(aero["vlm"]["cl"], "-", "section lift coefficient of each lattice strip "
                                                          "(with the wakes)")}
@@ -555,7 +567,7 @@ class Aircraft(AircraftGeometryMixin, AirframeDragMixin):
         stopped = {gm.name: _row(1.0 - rot[gm.name]["active"]) for gm in self.groups if rot[gm.name]["off"].size}
         b = self.drag_buildup(self.vlm, r, rho, mu, V, mach, stopped,
                               thrust={gm.name: rot[gm.name]["T"] for gm in self.groups}, heat_W=heat_W,
-                              alpha_body=alpha)
+                              alpha_body=alpha, post_stall_nodes=self.post_stall_nodes(nodes, K))
         pd, L_stall, L_body, D_folded = b["pd"], b["L_stall"], b["L_body"], b["D_folded"]
         D_device, deploy = self._drag_device(nodes, unknowns, q)
         D_parasite = b["D_parasite"] + D_device

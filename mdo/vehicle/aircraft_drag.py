@@ -26,7 +26,7 @@ class AirframeDragMixin:
     ``nacelles``, ``vlm``, ``lifting_wings``, ``strip_eta`` and ``wing_stall``)."""
 
     def drag_buildup(self, vlm, r, rho, mu, V, mach, stopped=None, thrust=None, heat_W=None,
-                     alpha_body=None) -> dict:
+                     alpha_body=None, post_stall_nodes=None) -> dict:
         """Everything but the induced drag and the approach drag device, for a lattice
         solution ``r`` of ``vlm`` (rows 1 x K, numbers or CasADi), each term in N:
 
@@ -48,6 +48,9 @@ class AirframeDragMixin:
           planform area), whose drag ``N sin(alpha)`` is this term and whose lift
           ``N cos(alpha)`` is ``L_body``.  Neither leakage nor anything else scales it.
 
+        ``post_stall_nodes`` (K booleans): the nodes where the post-stall strips apply (a
+        tilt-wing flying the viscous correction in its wing-borne segments); all nodes if None.
+
         The model and the initial guess both use it.  Returns ``pd`` (profile drag
         terms), ``L_stall``, ``L_body``, ``N_body``, ``D_folded``, ``D_parasite`` (N) and
         ``terms`` {name: N}."""
@@ -55,6 +58,9 @@ class AirframeDragMixin:
         q = 0.5 * rho * V * V
         pd = profile_drag(vlm, r, rho, mu, mach)
         L_stall, D_stall = stall_correction(vlm, r, pd, rho, V) if self.wing_stall else (0.0, 0.0)
+        if self.wing_stall and post_stall_nodes is not None:
+            on = ca.DM(np.asarray(post_stall_nodes, float).reshape(1, -1))
+            L_stall, D_stall = on * L_stall, on * D_stall
         D_bodies, _ = body_drag(self.bodies, V, rho, mu, mach)
         D_fin = 0.0
         for f in self.fins:

@@ -49,7 +49,7 @@ def viscous_upwash(ac, unknowns, v_cp, V):
     return tuple(a + b for a, b in zip(v_cp, dv))
 
 
-def viscous_rows(ac, r, unknowns, rho, mu, V, mach, flap=None) -> list:
+def viscous_rows(ac, r, unknowns, rho, mu, V, mach, flap=None, on=None) -> list:
     """The residual group (V1) of every strip at every node, from the lattice result ``r``.
 
     ``flap``: the segments' flap deflection (K numbers, 0-1).  A deflected flap enters the
@@ -57,7 +57,9 @@ def viscous_rows(ac, r, unknowns, rho, mu, V, mach, flap=None) -> list:
     (``Aircraft.flap_upwash``); the flapped section is the clean one with its lift raised by
     2 pi d_f at every angle (the cl_max increment of the stall margin), so d_f is taken out of
     the effective angle and its lift added to the section's: a flap the linear lattice carries
-    is not undone by the correction (Delta = 0 where the section is linear)."""
+    is not undone by the correction (Delta = 0 where the section is linear).  ``on`` (K
+    booleans): the nodes where the correction applies; elsewhere the shifts are held at zero
+    (a tilt-wing's transitions, which keep the post-stall strips); all nodes if None."""
     if not ac.wing_viscous:
         return []
     vlm = ac.vlm
@@ -91,6 +93,9 @@ def viscous_rows(ac, r, unknowns, rho, mu, V, mach, flap=None) -> list:
     for i in np.flatnonzero(~exposed):
         rows[i] = 2 * np.pi * shift[i, :]
     R = ca.vertcat(*rows)
+    if on is not None and not np.all(on):
+        m = ca.DM(np.asarray(on, float).reshape(1, -1))
+        R = ca.repmat(m, S, 1) * R + ca.repmat(1.0 - m, S, 1) * (2 * np.pi * shift)
     labels = [f"strip {i} ({vlm.surfaces[vlm.strip_surface[i]].name})" for i in range(vlm.n_strips)]
     return [ResidualGroup("wing strip cl (lifted)", cl - r["cl_local"], scale=0.5, unit="-", defines=CL,
                           row_labels=labels),
