@@ -9,12 +9,15 @@ tangency (not in the Kutta-Joukowski velocity), and the residual group "wing vis
 
 (:mod:`mdo.wing.viscous`, validated through stall on Graf et al. 2014).  cl_s is the strip's cl on
 its local velocity (slipstreams included), Re_s = rho V c / mu (freestream, as the stall margin's
-cl_max(Re)), the section the strip's
-airfoil surrogate (``mdo.airfoil``).  The strips' lift, induced drag, moments and stall margin then
-follow the section polars: cl_max and the margin below it mean the section's.  Strips inside
-the fuselage (``Aircraft.strip_exposed`` False, as for the stall margin) keep the linear lattice.  It replaces the
-tilt-wing's one-pass post-stall strips (``wing_stall``).  Off by default (the committed results
-fly the linear lattice); cost and effect measured in issue 17's notes.
+cl_max(Re)), the section the strip's airfoil surrogate (``mdo.airfoil``), one SX kernel per section.
+The strips' lift, induced drag, moments and stall margin then follow the section polars: cl_max and
+the margin below it mean the section's.  Strips inside the fuselage (``Aircraft.strip_exposed``
+False, as for the stall margin) keep the linear lattice.
+
+On by default for airplanes; a tilt-wing flies its one-pass post-stall strips (``wing_stall``)
+instead, and with both the correction applies at the wing-borne nodes only
+(``Aircraft.post_stall_nodes``).  Cost and effect: ``results/table3.md`` (2026-12-05, sixth) and
+``results/benchmark.md``.
 """
 from __future__ import annotations
 
