@@ -31,6 +31,7 @@ AIRCRAFT_OPTIONS = {
     "wake_samples": (int, 1, 15),
     "trim": (bool,),
     "wing_viscous": (bool,),
+    "blown_profile_drag": (bool,),
 }
 
 #: the free-trajectory options of a problem that offers them (problems/ga2p.py, ga8p.py)

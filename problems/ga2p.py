@@ -67,14 +67,15 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
           motor_model: str = "pmsm", sections: str = "as_defined", leakage_fraction: float | None = None,
           nacelle_slipstream: bool = True, cooling_drag: bool = True, airframe_calibration: float | None = None,
           wing_mass: str = "bending", max_tip_deflection_pct: float | None = None,
-          trim: bool = True, wing_viscous: bool | None = None):
+          trim: bool = True, wing_viscous: bool | None = None,
+          blown_profile_drag: bool = False):
     p = Problem("ga2p", "GA-2P whole-mission optimization (Clarke et al. Eq. 7)")
     cfg = ga2p(rotation)
     cfg = replace(cfg, battery=replace(cfg.battery, cells_series=cells_series, cells_parallel=cells_parallel),
                   cruise_speed_mps=cruise_speed_mph * MPH, cruise_altitude_m=cruise_altitude_ft * FT)
     cfg = airframe_variant(cfg, motor_model, sections, leakage_fraction, nacelle_slipstream, cooling_drag,
                            airframe_calibration, wing_mass, max_tip_deflection_pct)
-    vehicle = Aircraft(cfg, trim=trim, wing_viscous=wing_viscous, n_stations=n_stations, wing_strips=wing_strips, mass_model=mass_model,
+    vehicle = Aircraft(cfg, trim=trim, wing_viscous=wing_viscous, blown_profile_drag=blown_profile_drag, n_stations=n_stations, wing_strips=wing_strips, mass_model=mass_model,
                        coupling=coupling, swirl_recovery=swirl_recovery, limits=limits,
                        tip_mach_limit=tip_mach_limit, allow_regeneration=allow_regeneration, max_span_m=max_span_m,
                        design_point_constraints=not analysis, wake_samples=wake_samples)

@@ -70,12 +70,13 @@ def build(analysis: bool = False, n_props: int = 8, nodes: int = 6, cruise_dista
           n_stations: int = 16, wing_strips: int = 24, mass_model: str = "buildup", rotation: str = "inboard_up",
           coupling: str = "swirl", swirl_recovery: str = "bounded", limits: bool = True,
           tip_mach_limit: str = "nodes", allow_regeneration: bool = False, max_span_m: float | None = None,
-          approach_drag_area_m2: float = 0.40, wake_samples: int = 5, trim: bool = True, wing_viscous: bool | None = None):
+          approach_drag_area_m2: float = 0.40, wake_samples: int = 5, trim: bool = True, wing_viscous: bool | None = None,
+          blown_profile_drag: bool = False):
     cfg, _ = family_config(n_props, rotation)
     cfg = replace(cfg, battery=replace(cfg.battery, cells_series=cells_series, cells_parallel=cells_parallel),
                   cruise_speed_mps=cruise_speed_mph * MPH, cruise_altitude_m=cruise_altitude_ft * FT)
     p = Problem("ga_family", f"GA-{n_props}P whole-mission optimization (GA family, Eq. 7)")
-    vehicle = Aircraft(cfg, trim=trim, wing_viscous=wing_viscous, free=("rotor", "wing"), n_stations=n_stations, wing_strips=wing_strips,
+    vehicle = Aircraft(cfg, trim=trim, wing_viscous=wing_viscous, blown_profile_drag=blown_profile_drag, free=("rotor", "wing"), n_stations=n_stations, wing_strips=wing_strips,
                        mass_model=mass_model, coupling=coupling, swirl_recovery=swirl_recovery, limits=limits,
                        tip_mach_limit=tip_mach_limit, allow_regeneration=allow_regeneration, max_span_m=max_span_m,
                        design_point_constraints=not analysis, wake_samples=wake_samples)

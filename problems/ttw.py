@@ -137,6 +137,7 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
           nacelle_slipstream: bool = True, cooling_drag: bool = True, airframe_calibration: float | None = None,
           wing_mass: str = "bending", max_tip_deflection_pct: float | None = None,
           tilt: str = "schedule", cabin_attitude_deg: float | None = None, trim: bool = True, wing_viscous: bool | None = None,
+          blown_profile_drag: bool = False,
           trajectory: str = "prescribed", max_block_time_min: float | None = None,
           min_climb_gradient_pct: float | None = None, max_span_m: float | None = None):
     p = Problem("ttw", "TTW tandem tilt-wing whole-mission optimization (Clarke et al. Eq. 7)")
@@ -147,7 +148,7 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
                   cruise_speed_mps=cruise_speed_mph * MPH, cruise_altitude_m=cruise_altitude_ft * FT)
     cfg = airframe_variant(cfg, motor_model, sections, leakage_fraction, nacelle_slipstream, cooling_drag,
                            airframe_calibration, wing_mass, max_tip_deflection_pct)
-    vehicle = Aircraft(cfg, trim=trim, wing_viscous=wing_viscous, n_stations=n_stations, n_azimuth=n_azimuth, wing_strips=wing_strips,
+    vehicle = Aircraft(cfg, trim=trim, wing_viscous=wing_viscous, blown_profile_drag=blown_profile_drag, n_stations=n_stations, n_azimuth=n_azimuth, wing_strips=wing_strips,
                        mass_model=mass_model, coupling=coupling, swirl_recovery=swirl_recovery, limits=limits,
                        tip_mach_limit=tip_mach_limit, allow_regeneration=allow_regeneration,
                        design_point_constraints=not analysis, wake_samples=wake_samples, pitch=pitch, tilt=tilt,

@@ -88,3 +88,19 @@ def test_a_tilt_wing_flies_the_correction_where_it_is_wing_borne():
     assert t.wing_viscous and t.wing_stall
     nodes = SimpleNamespace(parameters={"stall_margin_cl": np.array([[0.1, -1.0, -1.0, 0.1]])})
     assert t.post_stall_nodes(nodes, 4).tolist() == [False, True, True, False]
+
+
+def test_blown_strips_see_the_slipstreams_axial_velocity():
+    """``Aircraft(blown_profile_drag=True)``: a uniform axial wake of 5 m/s over a wing at 30 m/s
+    gives every strip V_local = 35 m/s and cl_local = cl (30/35)^2 for its profile drag."""
+    from types import SimpleNamespace
+    from mdo.vehicle.aircraft import Aircraft
+    v = VLM([trapezoid("w", 8.0, 1.0, 1.0, nspan=6)])
+    r = v.solve(0.05, 30.0)
+    N = v.n_panels
+    zero = ca.DM.zeros(N, 1)
+    fake = SimpleNamespace(vlm=v)
+    out = Aircraft._blown_strips(fake, r, (5.0 * ca.DM.ones(N, 1), zero, zero), (zero, zero, zero),
+                                 ca.DM(30.0), ca.DM(0.0))
+    assert np.allclose(np.array(out["V_local"]), 35.0)
+    assert np.allclose(np.array(out["cl_local"]), np.array(r["cl"]) * (30.0 / 35.0) ** 2)

@@ -170,6 +170,9 @@ class Aircraft(AircraftGeometryMixin, AirframeDragMixin):
         for a tilt-wing.  With ``wing_stall`` as well (a tilt-wing asked for it), the one-pass
         post-stall strips apply at the nodes of segments that are not wing-borne (negative
         ``stall_margin_cl``: the transitions) and the correction at every other node.
+    blown_profile_drag : the strips' profile drag at the dynamic pressure of the whole wake at
+        their control points (the slipstream's axial part included); off by default, where the
+        "swirl" coupling's local velocity leaves the axial part out (issue 17's notes).
     Segments may set ``drag_device_area_m2`` (gear/flap drag on approach, a control),
     ``flap_deflection`` (0-1, raises the stall limit of flapped strips) and
     ``<group>.active`` (0: that rotor group stopped/folded there).
@@ -183,7 +186,8 @@ class Aircraft(AircraftGeometryMixin, AirframeDragMixin):
                  bounds: DesignBounds | None = None,
                  positions_free: bool | None = None, design_point_constraints: bool = True,
                  wing_stall: bool | None = None, slipstream_breaks: bool = False, wake_samples: int = 5,
-                 pitch: str = "control", tilt: str = "schedule", trim: bool = True, wing_viscous: bool | None = None):
+                 pitch: str = "control", tilt: str = "schedule", trim: bool = True, wing_viscous: bool | None = None,
+                 blown_profile_drag: bool = False):
         self._check_options(config, free, coupling, mass_model, tip_mach_limit, swirl_recovery, wake_samples,
                             stall_margin_cl, max_span_m, pitch, tilt, trim)
         self.config = config
@@ -207,6 +211,9 @@ class Aircraft(AircraftGeometryMixin, AirframeDragMixin):
         if wing_viscous is None:
             wing_viscous = config.kind != "tilt_wing" and not wing_stall
         self.wing_viscous = bool(wing_viscous)
+        # the strips' profile drag at the local dynamic pressure with the slipstream's axial part too
+        # (with the "swirl" coupling the lattice's local velocity leaves it out); off: as committed
+        self.blown_profile_drag = bool(blown_profile_drag)
         # with both, the post-stall strips apply where the segment is not wing-borne (a negative
         # stall margin: a tilt-wing's transitions) and the viscous correction everywhere else
         self.wing_stall = (config.kind == "tilt_wing") if wing_stall is None else bool(wing_stall)
@@ -565,7 +572,8 @@ class Aircraft(AircraftGeometryMixin, AirframeDragMixin):
         else:
             credit, D_i = recovered, r["D_i"]
         stopped = {gm.name: _row(1.0 - rot[gm.name]["active"]) for gm in self.groups if rot[gm.name]["off"].size}
-        b = self.drag_buildup(self.vlm, r, rho, mu, V, mach, stopped,
+        r_blown = self._blown_strips(r, v_axial, v_rest, V, wing_alpha) if self.blown_profile_drag else None
+        b = self.drag_buildup(self.vlm, r, rho, mu, V, mach, stopped, r_profile=r_blown,
                               thrust={gm.name: rot[gm.name]["T"] for gm in self.groups}, heat_W=heat_W,
                               alpha_body=alpha, post_stall_nodes=self.post_stall_nodes(nodes, K))
         pd, L_stall, L_body, D_folded = b["pd"], b["L_stall"], b["L_body"], b["D_folded"]
@@ -576,6 +584,22 @@ class Aircraft(AircraftGeometryMixin, AirframeDragMixin):
                 "D_parasite": D_parasite, "D_device": D_device, "deploy": deploy, "q": q, "D_folded": D_folded,
                 "drag_terms": b["terms"], "body_normal_N": b["N_body"],
                 "swirl_recovered_W": recovered, "swirl_available_W": available, "swirl_credit_W": credit}
+
+    def _blown_strips(self, r, v_axial, v_rest, V, alpha):
+        """The lattice result with each strip's local velocity and cl on the whole wake at its
+        control points (the slipstream's axial part included): what its profile drag sees."""
+        vlm = self.vlm
+        K = r["cl"].shape[1]
+        N = vlm.n_panels
+        ones_N = ca.DM.ones(N, 1)
+        vx, vy, vz = (a + b for a, b in zip(v_axial, v_rest))
+        Ux = ca.mtimes(ones_N, V * ca.cos(alpha)) + vx
+        Uz = ca.mtimes(ones_N, V * ca.sin(alpha)) + vz
+        U2 = ca.mtimes(vlm.strip_sum, Ux * Ux + vy * vy + Uz * Uz) / ca.mtimes(vlm.strip_sum, ca.DM.ones(N, K))
+        out = dict(r)
+        out["V_local"] = ca.sqrt(U2)
+        out["cl_local"] = r["cl"] * ca.repmat(V * V, vlm.n_strips, 1) / U2
+        return out
 
     # ------------------------------------------------------------------ guesses
     def guess_motor_rating(self, gm, power_W: float, speed_radps: float) -> None:

@@ -26,7 +26,7 @@ class AirframeDragMixin:
     ``nacelles``, ``vlm``, ``lifting_wings``, ``strip_eta`` and ``wing_stall``)."""
 
     def drag_buildup(self, vlm, r, rho, mu, V, mach, stopped=None, thrust=None, heat_W=None,
-                     alpha_body=None, post_stall_nodes=None) -> dict:
+                     alpha_body=None, post_stall_nodes=None, r_profile=None) -> dict:
         """Everything but the induced drag and the approach drag device, for a lattice
         solution ``r`` of ``vlm`` (rows 1 x K, numbers or CasADi), each term in N:
 
@@ -48,7 +48,9 @@ class AirframeDragMixin:
           planform area), whose drag ``N sin(alpha)`` is this term and whose lift
           ``N cos(alpha)`` is ``L_body``.  Neither leakage nor anything else scales it.
 
-        ``post_stall_nodes`` (K booleans): the nodes where the post-stall strips apply (a
+        ``r_profile``: the lattice result whose strips' local velocity and cl the profile drag
+        uses (``Aircraft(blown_profile_drag=True)``: the slipstream's axial part included); the
+        post-stall strips keep ``r``'s.  ``post_stall_nodes`` (K booleans): the nodes where the post-stall strips apply (a
         tilt-wing flying the viscous correction in its wing-borne segments); all nodes if None.
 
         The model and the initial guess both use it.  Returns ``pd`` (profile drag
@@ -58,6 +60,8 @@ class AirframeDragMixin:
         q = 0.5 * rho * V * V
         pd = profile_drag(vlm, r, rho, mu, mach)
         L_stall, D_stall = stall_correction(vlm, r, pd, rho, V) if self.wing_stall else (0.0, 0.0)
+        if r_profile is not None:
+            pd = profile_drag(vlm, r_profile, rho, mu, mach)
         if self.wing_stall and post_stall_nodes is not None:
             on = ca.DM(np.asarray(post_stall_nodes, float).reshape(1, -1))
             L_stall, D_stall = on * L_stall, on * D_stall
