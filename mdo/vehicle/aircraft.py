@@ -58,9 +58,10 @@ axes with x aft, y starboard, z up (``mdo.wing``).
 
 Layout: this file holds ``DesignBounds`` and ``Aircraft`` in sections - design (the design
 variables, mass, wing design lifts), protocol (unknowns, states, ``evaluate`` and its rotor
-and aerodynamic parts), wing tilt, guesses.
+and aerodynamic parts), guesses.
 Beside it: ``aircraft_geometry.py`` (lattice surfaces, rotors, wakes, strip layout, bodies,
 disk clearance), ``viscous_wing.py`` (the strips on their section polars),
+``aircraft_tilt.py`` (a tilt-wing's wing-mounted angle: schedule or control),
 ``aircraft_nodes.py`` (the operating limits and ``mission.csv`` outputs at the
 nodes), ``aircraft_drag.py`` (the parasite drag build-up, flaps, drag device),
 ``rotor_group.py`` (one rotor group's design and BEMT), ``balance.py`` (pitch trim),
@@ -68,7 +69,6 @@ nodes), ``aircraft_drag.py`` (the parasite drag build-up, flaps, drag device),
 """
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import casadi as ca
@@ -81,7 +81,8 @@ from ..powertrain import Bus
 from ..wake import influence_sum_parts
 from .aircraft_drag import AirframeDragMixin
 from .aircraft_geometry import AircraftGeometryMixin
-from .aircraft_nodes import _num, _row, _stall_margin, node_outputs, operating_limits, wing_design_lift_rows
+from .aircraft_tilt import WingTiltMixin
+from .aircraft_nodes import _num, _row, node_outputs, operating_limits, wing_design_lift_rows
 from .balance import add_balance, trim_residuals, trim_unknowns, trim_upwash
 from .base import G0, NodeEvaluation, Output, ResidualGroup, State, Unknown
 from .config import VehicleConfig, WingConfig
@@ -123,7 +124,7 @@ class DesignBounds:
     tip_clearance_m: float = 0.05          # between neighbouring disks, and disk to symmetry plane
 
 
-class Aircraft(AircraftGeometryMixin, AirframeDragMixin):
+class Aircraft(AircraftGeometryMixin, AirframeDragMixin, WingTiltMixin):
     """A :class:`VehicleConfig` flying a mission (see the module docstring).
 
     Parameters
@@ -415,51 +416,6 @@ class Aircraft(AircraftGeometryMixin, AirframeDragMixin):
         return [ResidualGroup("state of charge reserve", final_states["state_of_charge"] - r, kind=">=",
                               scale=0.1, unit="-", row_labels=[f"end of mission (reserve {r:g})"])]
 
-    # ------------------------------------------------------------------ wing tilt
-    def _tilt_unknown(self):
-        """The ``wing_tilt`` control: the tilting wings' common range and slowest rate."""
-        tilting = [w for w in self.config.wings if w.tilting]
-        lo = max(w.tilt_range_deg[0] for w in tilting)
-        hi = min(w.tilt_range_deg[1] for w in tilting)
-        if not lo < hi:
-            raise InputError("tilt_range_deg", f"the tilting wings' ranges do not overlap ({lo:g} >= {hi:g} deg)")
-        return Unknown("wing_tilt", unit="rad", scale=0.5, lower=math.radians(lo), upper=math.radians(hi),
-                       only_where="wing_tilt_control", replaces="wing_mounted_angle_rad",
-                       max_rate=math.radians(min(w.max_tilt_rate_degps for w in tilting)),
-                       description=f"wing-mounted angle of the tilting wings ({lo:g} to {hi:g} deg)")
-
-    @staticmethod
-    def scheduled_wing_angle(parameters, K) -> np.ndarray:
-        """The segments' wing-mounted angle at every node (rad, numbers, K)."""
-        return _num(parameters.get("wing_mounted_angle_rad", _row(0.0, K))).ravel() * np.ones(K)
-
-    def tilt_control_nodes(self, parameters, K) -> np.ndarray:
-        """Nodes where the wing-mounted angle is the ``wing_tilt`` control (bool, K)."""
-        if self.tilt != "control":
-            return np.zeros(K, bool)
-        return _num(parameters.get("wing_tilt_control", _row(0.0, K))).ravel() * np.ones(K) > 0.0
-
-    def wing_mounted_angle(self, parameters, unknowns, K):
-        """The wing-mounted angle at every node (rad, 1 x K): the segments' schedule, or the
-        ``wing_tilt`` control at the nodes of ``tilt_control_nodes``."""
-        wma = parameters.get("wing_mounted_angle_rad", _row(0.0, K))
-        on = self.tilt_control_nodes(parameters, K)
-        if not on.any():
-            return wma
-        return unknowns["wing_tilt"] + _row(1.0 - on) * wma
-
-    def rotor_axis_angle(self, gm, wma):
-        """Angle of a group's thrust axis above the body x axis: the wing-mounted angle if its wing tilts."""
-        return wma if gm.tilting else 0.0 * wma
-
-    def post_stall_nodes(self, nodes, K):
-        """With both the viscous correction and the post-stall strips: the nodes of segments that
-        are not wing-borne (negative ``stall_margin_cl``), where the post-stall strips apply and the
-        shifts are held at zero (K booleans); None otherwise (each model at every node)."""
-        if not (self.wing_viscous and self.wing_stall):
-            return None
-        return _stall_margin(self, nodes, K) < 0.0
-
     def evaluate(self, nodes, unknowns) -> NodeEvaluation:
         if self._problem is None:
             raise RuntimeError("Aircraft.evaluate before setup(problem)")
@@ -584,22 +540,6 @@ class Aircraft(AircraftGeometryMixin, AirframeDragMixin):
                 "D_parasite": D_parasite, "D_device": D_device, "deploy": deploy, "q": q, "D_folded": D_folded,
                 "drag_terms": b["terms"], "body_normal_N": b["N_body"],
                 "swirl_recovered_W": recovered, "swirl_available_W": available, "swirl_credit_W": credit}
-
-    def _blown_strips(self, r, v_axial, v_rest, V, alpha):
-        """The lattice result with each strip's local velocity and cl on the whole wake at its
-        control points (the slipstream's axial part included): what its profile drag sees."""
-        vlm = self.vlm
-        K = r["cl"].shape[1]
-        N = vlm.n_panels
-        ones_N = ca.DM.ones(N, 1)
-        vx, vy, vz = (a + b for a, b in zip(v_axial, v_rest))
-        Ux = ca.mtimes(ones_N, V * ca.cos(alpha)) + vx
-        Uz = ca.mtimes(ones_N, V * ca.sin(alpha)) + vz
-        U2 = ca.mtimes(vlm.strip_sum, Ux * Ux + vy * vy + Uz * Uz) / ca.mtimes(vlm.strip_sum, ca.DM.ones(N, K))
-        out = dict(r)
-        out["V_local"] = ca.sqrt(U2)
-        out["cl_local"] = r["cl"] * ca.repmat(V * V, vlm.n_strips, 1) / U2
-        return out
 
     # ------------------------------------------------------------------ guesses
     def guess_motor_rating(self, gm, power_W: float, speed_radps: float) -> None:

@@ -15,7 +15,7 @@ from ..core.smooth import smooth_max
 from ..wing import body_drag, crossflow_normal_force, profile_drag
 from ..wing.buildup import CP_AIR
 from ..wing.drag import form_factor_wing, skin_friction
-from .aircraft_nodes import _num, _row
+from .aircraft_nodes import _num, _row, _stall_margin
 from .stall import stall_correction
 
 __all__ = ["AirframeDragMixin"]
@@ -159,3 +159,23 @@ class AirframeDragMixin:
         area = _num(nodes.parameters.get("drag_device_area_m2", _row(0.0, K))).ravel() * np.ones(K)
         deploy = unknowns.get("drag_device_deployment", ca.DM.zeros(1, K))
         return q * _row(area) * deploy, deploy
+
+    def post_stall_nodes(self, nodes, K):
+        """With both the viscous correction and the post-stall strips: the nodes of segments that
+        are not wing-borne (negative ``stall_margin_cl``), where the post-stall strips apply and the
+        shifts are held at zero (K booleans); None otherwise (each model at every node)."""
+        if not (self.wing_viscous and self.wing_stall):
+            return None
+        return _stall_margin(self, nodes, K) < 0.0
+
+    def _blown_strips(self, r, v_axial, v_rest, V, alpha):
+        """The lattice result with each strip's local velocity and cl on the whole wake at its
+        control points (the slipstream's axial part included): what its profile drag sees
+        (``blown_profile_drag``)."""
+        vlm = self.vlm
+        ones_N = ca.DM.ones(vlm.n_panels, 1)
+        vx, vy, vz = (a + b for a, b in zip(v_axial, v_rest))
+        U = (ca.mtimes(ones_N, V * ca.cos(alpha)) + vx, vy, ca.mtimes(ones_N, V * ca.sin(alpha)) + vz)
+        out = dict(r)
+        out["V_local"], out["cl_local"] = vlm.strip_local(U, r["cl"], V)
+        return out

@@ -79,9 +79,9 @@ def viscous_rows(ac, r, unknowns, rho, mu, V, mach, flap=None, on=None) -> list:
         d_f = np.outer(ac._flap_strip_dalpha(), np.asarray(flap, float).ravel() * np.ones(K))
     a0 = np.repeat(np.asarray(ac._alpha0_lattice, float).reshape(-1, 1), K, axis=1)
     M = ca.repmat(mach, S, 1)
-    rows = [None] * S
-    names = [str(a) for a in vlm.strip_airfoil]
     exposed = np.asarray(ac.strip_exposed, bool)
+    names = [str(a) for a in vlm.strip_airfoil]
+    rows = [ca.DM.zeros(1, K)] * S
     for name in sorted(set(names)):
         idx = [i for i, a in enumerate(names) if a == name and exposed[i]]
         if not idx:
@@ -91,14 +91,14 @@ def viscous_rows(ac, r, unknowns, rho, mu, V, mach, flap=None, on=None) -> list:
         R = ca.reshape(f(*args), len(idx), K)
         for j, i in enumerate(idx):
             rows[i] = R[j, :]
-    # strips inside the fuselage (the wing's carry-through, no exposed section to stall) stay on
-    # the linear lattice: their shift is held at zero
-    for i in np.flatnonzero(~exposed):
-        rows[i] = 2 * np.pi * shift[i, :]
+    # where the correction does not apply the shift is held at zero: strips inside the fuselage
+    # (the wing's carry-through, no exposed section to stall) and, with ``on``, the nodes that
+    # keep the post-stall strips
+    active = np.outer(exposed, np.ones(K, bool) if on is None else np.asarray(on, bool))
     R = ca.vertcat(*rows)
-    if on is not None and not np.all(on):
-        m = ca.DM(np.asarray(on, float).reshape(1, -1))
-        R = ca.repmat(m, S, 1) * R + ca.repmat(1.0 - m, S, 1) * (2 * np.pi * shift)
+    if not active.all():
+        m = ca.DM(active.astype(float))
+        R = m * R + (1.0 - m) * (2 * np.pi * shift)
     labels = [f"strip {i} ({vlm.surfaces[vlm.strip_surface[i]].name})" for i in range(vlm.n_strips)]
     return [ResidualGroup("wing strip cl (lifted)", cl - r["cl_local"], scale=0.5, unit="-", defines=CL,
                           row_labels=labels),

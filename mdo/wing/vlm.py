@@ -354,6 +354,16 @@ class VLM(LatticeAssemblyMixin):
         out.update(alpha=alpha, beta=beta, V=V, rho=rho, mach=mach)
         return out
 
+    def strip_local(self, U, cl, V):
+        """Each strip's local speed (the rms over its panels of ``U`` = (Ux, Uy, Uz), N x K,
+        m/s) and its cl on that speed's dynamic pressure from ``cl`` on the freestream's
+        (V, 1 x K): (V_local, cl_local), n_strips x K."""
+        Ux, Uy, Uz = U
+        K = cl.shape[1]
+        U2 = ca.mtimes(self.strip_sum, Ux * Ux + Uy * Uy + Uz * Uz) / \
+            ca.mtimes(self.strip_sum, ca.DM.ones(self.n_panels, K))
+        return ca.sqrt(U2), cl * ca.repmat(V * V, self.n_strips, 1) / U2
+
     def loads(self, Gam, *, alpha, beta, V, rho, vb, axes) -> dict:
         g = self._geo
         N = self.n_panels
@@ -427,11 +437,7 @@ class VLM(LatticeAssemblyMixin):
         qcw = _rs(ca.mtimes(cw, ca.DM.ones(1, Kn)), q)
         out["cl"] = lift_s / qcw
         out["ccl_cref"] = _cs(g["strip_chord"].T / c, out["cl"])
-        Ux, Uy, Uz = U_ext
-        U2 = ca.mtimes(self.strip_sum, Ux * Ux + Uy * Uy + Uz * Uz) / \
-            ca.mtimes(self.strip_sum, ca.DM.ones(N, Kn))
-        out["V_local"] = ca.sqrt(U2)
-        out["cl_local"] = out["cl"] * ca.mtimes(ones_S, V * V) / U2
+        out["V_local"], out["cl_local"] = self.strip_local(U_ext, out["cl"], V)
         Fn = Fx * _cs(g["normal"][0, :].T, ca.DM.ones(N, Kn)) + Fy * _cs(g["normal"][1, :].T, ca.DM.ones(N, Kn)) \
             + Fz * _cs(g["normal"][2, :].T, ca.DM.ones(N, Kn))
         out["dCp"] = Fn / _rs(ca.mtimes(g["area"].T, ca.DM.ones(1, Kn)), q)
