@@ -71,7 +71,7 @@ def build(analysis: bool = False, n_props: int = 8, nodes: int = 6, cruise_dista
           coupling: str = "swirl", swirl_recovery: str = "bounded", limits: bool = True,
           tip_mach_limit: str = "nodes", allow_regeneration: bool = False, max_span_m: float | None = None,
           approach_drag_area_m2: float = 0.40, wake_samples: int = 5, trim: bool = True, wing_viscous: bool | None = None,
-          blown_profile_drag: bool = False):
+          blown_profile_drag: bool = True):
     cfg, _ = family_config(n_props, rotation)
     cfg = replace(cfg, battery=replace(cfg.battery, cells_series=cells_series, cells_parallel=cells_parallel),
                   cruise_speed_mps=cruise_speed_mph * MPH, cruise_altitude_m=cruise_altitude_ft * FT)

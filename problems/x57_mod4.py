@@ -104,7 +104,7 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 1
           cruise_speed_mph: float = 172.0, cells_parallel: int = 40, coupling: str = "local",
           wing_strips: int = 20, n_stations: int = 12, approach_speed_kn: float = APPROACH_SPEED_MPS / KNOT,
           trim: bool = True, wing_viscous: bool | None = None,
-          blown_profile_drag: bool = False):
+          blown_profile_drag: bool = True):
     p = Problem("x57_mod4", "X-57 Maxwell Mod IV whole-mission optimization (two rotor groups)")
     cfg = x57_mod4(cells_parallel, cruise_speed_mph * MPH, cruise_altitude_ft * FT)
     vehicle = Aircraft(cfg, trim=trim, wing_viscous=wing_viscous, blown_profile_drag=blown_profile_drag, free=("rotor", "wing"), n_stations=n_stations, wing_strips=wing_strips,

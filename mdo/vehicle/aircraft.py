@@ -172,8 +172,9 @@ class Aircraft(AircraftGeometryMixin, AirframeDragMixin, WingTiltMixin):
         post-stall strips apply at the nodes of segments that are not wing-borne (negative
         ``stall_margin_cl``: the transitions) and the correction at every other node.
     blown_profile_drag : the strips' profile drag at the dynamic pressure of the whole wake at
-        their control points (the slipstream's axial part included); off by default, where the
-        "swirl" coupling's local velocity leaves the axial part out (issue 17's notes).
+        their control points (the slipstream's axial part included: a blown strip is scrubbed at
+        the slipstream's speed); on by default.  Off, the strips read the lattice's local velocity,
+        which with the "swirl" coupling leaves the axial part out (about freestream q).
     Segments may set ``drag_device_area_m2`` (gear/flap drag on approach, a control),
     ``flap_deflection`` (0-1, raises the stall limit of flapped strips) and
     ``<group>.active`` (0: that rotor group stopped/folded there).
@@ -188,7 +189,7 @@ class Aircraft(AircraftGeometryMixin, AirframeDragMixin, WingTiltMixin):
                  positions_free: bool | None = None, design_point_constraints: bool = True,
                  wing_stall: bool | None = None, slipstream_breaks: bool = False, wake_samples: int = 5,
                  pitch: str = "control", tilt: str = "schedule", trim: bool = True, wing_viscous: bool | None = None,
-                 blown_profile_drag: bool = False):
+                 blown_profile_drag: bool = True):
         self._check_options(config, free, coupling, mass_model, tip_mach_limit, swirl_recovery, wake_samples,
                             stall_margin_cl, max_span_m, pitch, tilt, trim)
         self.config = config
@@ -213,7 +214,7 @@ class Aircraft(AircraftGeometryMixin, AirframeDragMixin, WingTiltMixin):
             wing_viscous = config.kind != "tilt_wing" and not wing_stall
         self.wing_viscous = bool(wing_viscous)
         # the strips' profile drag at the local dynamic pressure with the slipstream's axial part too
-        # (with the "swirl" coupling the lattice's local velocity leaves it out); off: as committed
+        # (with the "swirl" coupling the lattice's local velocity leaves it out; that stays for the lift)
         self.blown_profile_drag = bool(blown_profile_drag)
         # with both, the post-stall strips apply where the segment is not wing-borne (a negative
         # stall margin: a tilt-wing's transitions) and the viscous correction everywhere else
