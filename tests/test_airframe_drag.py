@@ -113,10 +113,11 @@ def test_the_flying_aircraft_agrees_with_the_standalone_build_up(climb_cruise):
     the node's lift, bodies, nacelles in the slipstream, leakage) against the whole-airframe
     build-up of mdo.wing.buildup (flat-plate Cf with a 10 % laminar run x Raymer form and
     interference factors, wetted areas from the planforms, the same nacelles at the same
-    slipstream ratio, the wing scrubbed over two slipstream diameters of chord): within 10 %
-    without the cooling term, which the standalone omits.  The node flies at CL 0.65, where
-    the section polar's drag has risen above its minimum (the 63-412 tripped: cd 0.0075 at cl
-    0.3, 0.0083 at 0.8, Re 6e6); the standalone has no such term, so it must also be below."""
+    slipstream ratio, the wing scrubbed over two slipstream diameters of chord), the standalone's
+    wing given the section polar's rise above its minimum at the node's CL (the node flies at
+    CL 0.64: the 63-412 tripped has cd 0.0081 there against 0.0076 at its minimum, Re 5e6; the
+    flat-plate build-up has no lift-dependent term): within 10 % without the cooling term,
+    which the standalone omits; and above the standalone without that rise."""
     from mdo.core.atmosphere import density, dynamic_viscosity, speed_of_sound
     from mdo.vehicle.catalog import _ga_airframe
     from mdo.wing.buildup import INTERFERENCE, BodyComponent, DragBuildup, SurfaceComponent
@@ -144,7 +145,13 @@ def test_the_flying_aircraft_agrees_with_the_standalone_build_up(climb_cruise):
     out = bu.evaluate(V, rho, mu, V / a, slipstream={"nacelles": (1.0, r), "main_wing": (f_w, r)})
     q = 0.5 * rho * V * V
     aircraft = row("CDp")[k] - row("drag_cooling_N")[k] / (q * main.area_m2)
-    assert float(out["CD0"]) < aircraft < 1.10 * float(out["CD0"])   # measured: +8.6 %
+    a = np.radians(np.arange(-4.0, 10.0, 0.05))
+    Re = rho * V * main.area_m2 / main.span_m / mu
+    cl, cd, _ = Airfoil.from_name(GA_WING_AIRFOIL).coefficients(a, np.full_like(a, Re), 0 * a)
+    cl, cd = np.asarray(cl, float).ravel(), np.asarray(cd, float).ravel()
+    rise = out["terms"]["main_wing"]["dCD"] * (np.interp(row("CL")[k], cl, cd) / cd.min() - 1.0)
+    assert float(out["CD0"]) < aircraft
+    assert aircraft == pytest.approx(float(out["CD0"] + rise), rel=0.10)   # measured: +7.9 %
 
 
 def test_the_what_if_variant_changes_only_what_it_names():

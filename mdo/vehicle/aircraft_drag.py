@@ -49,8 +49,8 @@ class AirframeDragMixin:
           ``N cos(alpha)`` is ``L_body``.  Neither leakage nor anything else scales it.
 
         ``r_profile``: the lattice result whose strips' local velocity and cl the profile drag
-        uses (``Aircraft(blown_profile_drag=True)``: the slipstream's axial part included); the
-        post-stall strips keep ``r``'s.  ``post_stall_nodes`` (K booleans): the nodes where the post-stall strips apply (a
+        uses (``Aircraft(blown_profile_drag=True)``: the slipstream's axial part included); a
+        strip past stall trades that drag for the full-circle section's at ``r``'s local q.  ``post_stall_nodes`` (K booleans): the nodes where the post-stall strips apply (a
         tilt-wing flying the viscous correction in its wing-borne segments); all nodes if None.
 
         The model and the initial guess both use it.  Returns ``pd`` (profile drag
@@ -59,9 +59,12 @@ class AirframeDragMixin:
         cfg = self.config.drag
         q = 0.5 * rho * V * V
         pd = profile_drag(vlm, r, rho, mu, mach)
-        L_stall, D_stall = stall_correction(vlm, r, pd, rho, V) if self.wing_stall else (0.0, 0.0)
+        counted = None
         if r_profile is not None:
-            pd = profile_drag(vlm, r_profile, rho, mu, mach)
+            pd_r, pd = pd, profile_drag(vlm, r_profile, rho, mu, mach)
+            counted = (r_profile, pd)
+        L_stall, D_stall = (stall_correction(vlm, r, pd_r if counted else pd, rho, V, counted=counted)
+                            if self.wing_stall else (0.0, 0.0))
         if self.wing_stall and post_stall_nodes is not None:
             on = ca.DM(np.asarray(post_stall_nodes, float).reshape(1, -1))
             L_stall, D_stall = on * L_stall, on * D_stall

@@ -73,9 +73,15 @@ def stall_limits(airfoil: str) -> tuple:
     return _CACHE[key]
 
 
-def stall_correction(vlm, r, pd, rho, V, width: float = 0.1):
-    """Lift and drag corrections (N, 1 x K) of strips past stall (module docstring)."""
+def stall_correction(vlm, r, pd, rho, V, width: float = 0.1, counted=None):
+    """Lift and drag corrections (N, 1 x K) of strips past stall (module docstring).
+
+    A strip past stall trades the attached profile drag the build-up counted for the
+    full-circle section's drag at ``r``'s local dynamic pressure.  ``counted``: the
+    (lattice result, profile drag) pair the build-up counted, when not ``(r, pd)``
+    (the strips scrubbed on the whole wake, ``Aircraft.blown_profile_drag``)."""
     g = vlm.geometry
+    r_c, pd_c = counted if counted is not None else (r, pd)
     cl_loc = r["cl_local"]
     K = cl_loc.shape[1]
     Vl = r["V_local"]
@@ -94,9 +100,10 @@ def stall_correction(vlm, r, pd, rho, V, width: float = 0.1):
         cl_af, cd_af, _ = af.coefficients(alpha_e, pd["Re"][idx, :])
         wgt = 0.5 * (1 + ca.tanh(0.5 * (cl_i - cl_max) / width)) + 0.5 * (1 + ca.tanh(0.5 * (cl_min - cl_i) / width))
         q_loc = 0.5 * ca.repmat(rho, len(idx), 1) * Vl[idx, :] ** 2
+        q_c = 0.5 * ca.repmat(rho, len(idx), 1) * r_c["V_local"][idx, :] ** 2
         area = ca.repmat(c[idx] * w[idx], 1, K)
         dL = dL + ca.mtimes(ca.DM.ones(1, len(idx)), wgt * (cl_af - cl_i) * q_loc * area)
-        dD = dD + ca.mtimes(ca.DM.ones(1, len(idx)), wgt * (cd_af - pd["cd"][idx, :]) * q_loc * area)
+        dD = dD + ca.mtimes(ca.DM.ones(1, len(idx)), wgt * (cd_af * q_loc - pd_c["cd"][idx, :] * q_c) * area)
     factor = 2.0 if vlm.symmetric else 1.0
     return factor * dL, factor * dD
 
