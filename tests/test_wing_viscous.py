@@ -104,3 +104,38 @@ def test_blown_strips_see_the_slipstreams_axial_velocity():
                                  ca.DM(30.0), ca.DM(0.0))
     assert np.allclose(np.array(out["V_local"]), 35.0)
     assert np.allclose(np.array(out["cl_local"]), np.array(r["cl"]) * (30.0 / 35.0) ** 2)
+
+
+def test_a_stalled_blown_strip_trades_the_drag_that_was_counted():
+    """Strips past stall (cl up to 2.1 on the swirl-only local velocity) whose profile drag was
+    counted on the whole wake (``blown_profile_drag``): attached drag + the post-stall correction
+    blends the counted drag into the full-circle section's drag at the lattice's local q by the
+    stall weight, never the difference of two
+    attached drags at different speeds and cl.  Before 2026-12-05 (seventh) the correction
+    subtracted the attached drag at the lattice's own speed and cl: at the TTW's climb transition
+    that was a negative profile drag (-552 N)."""
+    from mdo.vehicle.stall import stall_correction, stall_limits
+    from mdo.wing.drag import profile_drag
+    v = VLM([trapezoid("w", 8.0, 1.0, 1.0, nspan=6, airfoil="naca0015")])
+    r = v.solve(0.40, 30.0)            # 23 deg: every strip past stall on the lattice's velocity
+    S = v.n_strips
+    r_b = dict(r)                        # the same circulation on a slipstream twice as fast
+    r_b["V_local"], r_b["cl_local"] = 2.0 * r["V_local"], r["cl_local"] / 4.0
+    rho, mu = 1.2, 1.8e-5
+    pd, pd_b = profile_drag(v, r, rho, mu), profile_drag(v, r_b, rho, mu)
+    _, dD_old = stall_correction(v, r, pd, rho, 30.0)
+    _, dD = stall_correction(v, r, pd, rho, 30.0, counted=(r_b, pd_b))
+    # by hand: each strip's attached drag as counted, blended by the stall weight (logistic,
+    # width 0.1 in cl) into the full-circle drag at the lattice's local q
+    af, a0, slope, cl_min, cl_max = stall_limits("naca0015")
+    cl = np.array(r["cl_local"])
+    _, cd_af, _ = af.coefficients(a0 + cl / slope, np.array(pd["Re"]))
+    w = 0.5 * (1 + np.tanh(0.5 * (cl - cl_max) / 0.1)) + 0.5 * (1 + np.tanh(0.5 * (cl_min - cl) / 0.1))
+    g = v.geometry
+    q, q_b = (0.5 * rho * np.array(x["V_local"]) ** 2 for x in (r, r_b))
+    area = (np.array(g["strip_chord"]) * np.array(g["strip_width"])).reshape(S, 1)
+    blend = (1 - w) * np.array(pd_b["cd"]) * q_b + w * np.array(cd_af) * q
+    expected = 2 * float(np.sum(blend * area))                    # both halves
+    assert np.sum(w > 0.99) >= 3 and np.sum(w < 0.3) >= 2         # inboard past stall, the tip not
+    assert float(pd_b["D_p"] + dD) == pytest.approx(expected, rel=1e-6)
+    assert float(pd_b["D_p"] + dD) > 0 and float(pd_b["D_p"] + dD_old) < float(pd_b["D_p"] + dD)
