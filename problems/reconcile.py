@@ -6,7 +6,8 @@ Flies each GA aircraft's baseline (``mdo run problems/<p>.py --analysis``: Table
 initial design frozen, the motors sized) with our models, then undoes one of our modelling
 choices at a time, cumulatively, towards the assumptions of the paper's SUAVE model:
 the DC motor behind a flat 0.95 ESC, the free-transition XFOIL section polars, the old
-parasite-drag allowances (5 % leakage, nacelles in the freestream, no cooling drag), no
+parasite-drag allowances (5 % leakage, nacelles and the wing's blown strips at the freestream's dynamic
+pressure, no cooling drag), no
 operating limits with the swirl credit unbounded and no approach drag device, and a fixed
 gross weight.  Each step is a run folder (pruned to its summary, energy breakdown and
 mission table) under ``results/reconciliation/<p>/``; the table with each step's energy,
@@ -33,8 +34,8 @@ STEPS = [
     ("0_ours", "ours: tripped sections, drag build-up, PMSM + inverter, every limit", {}),
     ("1_dc_motor", "the paper's DC motor behind a 0.95 ESC", {"motor_model": "dc"}),
     ("2_free_transition", "free-transition XFOIL polars (wing, tail, propeller)", {"sections": "free_transition"}),
-    ("3_old_allowances", "5 % leakage, nacelles in the freestream, no cooling drag",
-     {"leakage_fraction": 0.05, "nacelle_slipstream": False, "cooling_drag": False}),
+    ("3_old_allowances", "5 % leakage, nacelles and wing strips at the freestream's q, no cooling drag",
+     {"leakage_fraction": 0.05, "nacelle_slipstream": False, "blown_profile_drag": False, "cooling_drag": False}),
     ("4_no_limits", "no operating limits, unbounded swirl credit, no approach drag device",
      {"limits": False, "swirl_recovery": "unbounded", "approach_drag_area_m2": 0.0}),
     ("5_fixed_weight", "gross weight fixed at the initial design's build-up (the motors no longer add their "
