@@ -50,7 +50,8 @@ class AirframeDragMixin:
 
         ``r_profile``: the lattice result whose strips' local velocity and cl the profile drag
         uses (``Aircraft(blown_profile_drag=True)``: the slipstream's axial part included); a
-        strip past stall trades that drag for the full-circle section's at ``r``'s local q.  ``post_stall_nodes`` (K booleans): the nodes where the post-stall strips apply (a
+        strip past stall trades that drag for the full-circle section's at ``r``'s local q.
+        ``post_stall_nodes`` (K booleans): the nodes where the post-stall strips apply (a
         tilt-wing flying the viscous correction in its wing-borne segments); all nodes if None.
 
         The model and the initial guess both use it.  Returns ``pd`` (profile drag
@@ -58,12 +59,10 @@ class AirframeDragMixin:
         ``terms`` {name: N}."""
         cfg = self.config.drag
         q = 0.5 * rho * V * V
-        pd = profile_drag(vlm, r, rho, mu, mach)
-        counted = None
-        if r_profile is not None:
-            pd_r, pd = pd, profile_drag(vlm, r_profile, rho, mu, mach)
-            counted = (r_profile, pd)
-        L_stall, D_stall = (stall_correction(vlm, r, pd_r if counted else pd, rho, V, counted=counted)
+        pd_lattice = profile_drag(vlm, r, rho, mu, mach)
+        pd = pd_lattice if r_profile is None else profile_drag(vlm, r_profile, rho, mu, mach)
+        counted = None if r_profile is None else (r_profile, pd)   # what a stalled strip trades away
+        L_stall, D_stall = (stall_correction(vlm, r, pd_lattice, rho, V, counted=counted)
                             if self.wing_stall else (0.0, 0.0))
         if self.wing_stall and post_stall_nodes is not None:
             on = ca.DM(np.asarray(post_stall_nodes, float).reshape(1, -1))
