@@ -64,10 +64,11 @@ powered-lift vehicle's designer may state another rule), ``max_block_time_min`` 
 free trajectory, the mission duration limit), ``max_span_m``
 (none: each wing's span within 0.6-3.0x its baseline, ``DesignBounds``; a vertiport's or hangar's
 limit on both wings' span when given),
-``tol`` (IPOPT's tolerance, 1e-4 here, 1e-6 for the GA problems: at the TTW optimum the
-dual infeasibility stalls at a noise floor of 1e-5 to 3e-4 while the objective holds
-its first 9 digits and the barrier parameter is at its floor, 1e-11 — with 1e-6 IPOPT
-ends "Solved To Acceptable Level" at the same point after some 30 iterations at that floor).
+``tol`` (IPOPT's tolerance, 1e-8 = IPOPT's own default since 2026-12-05, seventh session;
+1e-6 for the GA problems.  Until then it was 1e-4: the dual infeasibility had stalled at a
+noise floor of 1e-5 to 3e-4 at the optimum, so that IPOPT ended "Solved To Acceptable Level";
+with the model of that session the optimization from the baseline reaches 1e-8 in 105
+iterations against 91 at 1e-4, the energy 0.004 % lower, results/ttw/README.md).
 ``motor_model`` ("pmsm", or "dc": the paper's DC motor behind a 0.95 ESC), ``sections``
 ("as_defined": the catalog's tripped sections; "free_transition": the XFOIL polars), ``leakage_fraction``
 (0.10), ``nacelle_slipstream`` (true), ``cooling_drag`` (true), ``airframe_calibration`` (the
@@ -132,7 +133,7 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
           n_stations: int = 16, n_azimuth: int = 4, wing_strips: int = 16, mass_model: str = "buildup",
           rotation: str = "inboard_up", coupling: str = "swirl", swirl_recovery: str = "bounded",
           limits: bool = True, tip_mach_limit: str = "nodes", allow_regeneration: bool = True,
-          wake_samples: int = 5, tol: float = 1e-4, pitch: str = "control",
+          wake_samples: int = 5, tol: float = 1e-8, pitch: str = "control",
           motor_model: str = "pmsm", sections: str = "as_defined", leakage_fraction: float | None = None,
           nacelle_slipstream: bool = True, cooling_drag: bool = True, airframe_calibration: float | None = None,
           wing_mass: str = "bending", max_tip_deflection_pct: float | None = None,
