@@ -79,6 +79,7 @@ import mdo.wake as wake
 from mdo.core.atmosphere import density, dynamic_viscosity, speed_of_sound
 from mdo.core.smooth import smooth_min
 from mdo.rotor import RotorGeometry, analyze
+from mdo.vehicle.aircraft import Aircraft
 from mdo.wing.drag import profile_drag
 from mdo.wing.geometry import Surface
 from mdo.wing.vlm import VLM
@@ -235,18 +236,15 @@ class Case:
 
     def blown(self, r, kw, alpha):
         """The lattice result with each strip's local speed and cl on the whole wake (the
-        slipstream's axial part included), as the aircraft's profile drag reads them
-        (``Aircraft(blown_profile_drag=True)``, the default); ``r`` itself without propellers."""
+        slipstream's axial part included), as the aircraft's profile drag reads them: the
+        aircraft's own ``Aircraft._blown_strips`` (``blown_profile_drag``, the default);
+        ``r`` itself without propellers."""
         if not kw:
             return r
-        V, vlm = self.fs["V"], self.vlm
-        ones = ca.DM.ones(vlm.n_panels, 1)
-        a = ca.DM(alpha).T
-        vx, vy, vz = kw["v_ext"]
-        U = (ca.mtimes(ones, V * ca.cos(a)) + vx, vy, ca.mtimes(ones, V * ca.sin(a)) + vz)
-        out = dict(r)
-        out["V_local"], out["cl_local"] = vlm.strip_local(U, r["cl"], ca.DM.ones(1, alpha.size) * V)
-        return out
+        K = np.atleast_1d(alpha).size
+        zero = tuple(0 * x for x in kw["v_ext"])
+        return Aircraft._blown_strips(SimpleNamespace(vlm=self.vlm), r, kw["v_ext"], zero,
+                                      ca.DM.ones(1, K) * self.fs["V"], ca.DM(np.atleast_1d(alpha)).T)
 
     def at_cl(self, cl_targets, iterations=4):
         """Angles of attack (secant, the propeller re-trimmed at each) for the target CLs."""
