@@ -29,6 +29,7 @@ AIRCRAFT_OPTIONS = {
     "tip_mach_limit": (str, "nodes", "design_point", "off"),
     "allow_regeneration": (bool,),
     "wake_samples": (int, 1, 15),
+    "wake_core_rel": (float, 0.05, 0.1),
     "trim": (bool,),
     "wing_viscous": (bool,),
     "blown_profile_drag": (bool,),

@@ -23,7 +23,8 @@ never exceeds the swirl power the slipstreams carry; "unbounded"), ``limits`` (t
 ``tip_mach_limit`` ("nodes", "design_point" or "off"), ``allow_regeneration`` (false),
 ``max_span_m`` (none: a hangar/gate limit), ``approach_drag_area_m2`` (0.40 m^2, ``GA_APPROACH_DRAG_AREA_M2``:
 gear and flap drag the pilot may add on BL and FA, a control per node; without it and
-without battery charging the clean airframe cannot slow down on the base leg), ``wake_samples`` (5),
+without battery charging the clean airframe cannot slow down on the base leg), ``wake_samples`` (7),
+``wake_core_rel`` (0.1: the width of the slipstream's edge, mdo.wake.DEFAULT_CORE_REL),
 ``trajectory`` ("prescribed": Table 5's speeds and rates; "free": every segment's speeds and
 duration are controls within the envelope of ``mdo.mission.trajectory``, the altitudes and the
 trip's ground distance kept), ``min_climb_gradient_pct`` (8.3: 14 CFR 23.65's take-off climb
@@ -45,6 +46,7 @@ from mdo.mission.profiles import ga_mission
 from mdo.nlp import Problem
 from mdo.studies import (AIRCRAFT_OPTIONS, AIRFRAME_OPTIONS, TRAJECTORY_OPTIONS, airframe_variant,
                          minimize_battery_energy, trajectory_envelope)
+from mdo.wake import DEFAULT_CORE_REL, DEFAULT_STRIP_SAMPLES
 from mdo.vehicle.aircraft import Aircraft
 from mdo.vehicle.catalog import ga2p
 
@@ -62,7 +64,7 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
           n_stations: int = 16, wing_strips: int = 24, mass_model: str = "buildup", rotation: str = "inboard_up",
           coupling: str = "swirl", swirl_recovery: str = "bounded", limits: bool = True,
           tip_mach_limit: str = "nodes", allow_regeneration: bool = False, max_span_m: float | None = None,
-          approach_drag_area_m2: float = 0.40, wake_samples: int = 5, trajectory: str = "prescribed",
+          approach_drag_area_m2: float = 0.40, wake_samples: int = DEFAULT_STRIP_SAMPLES, wake_core_rel: float = DEFAULT_CORE_REL, trajectory: str = "prescribed",
           max_block_time_min: float | None = None, min_climb_gradient_pct: float | None = None,
           motor_model: str = "pmsm", sections: str = "as_defined", leakage_fraction: float | None = None,
           nacelle_slipstream: bool = True, cooling_drag: bool = True, airframe_calibration: float | None = None,
@@ -78,7 +80,7 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
     vehicle = Aircraft(cfg, trim=trim, wing_viscous=wing_viscous, blown_profile_drag=blown_profile_drag, n_stations=n_stations, wing_strips=wing_strips, mass_model=mass_model,
                        coupling=coupling, swirl_recovery=swirl_recovery, limits=limits,
                        tip_mach_limit=tip_mach_limit, allow_regeneration=allow_regeneration, max_span_m=max_span_m,
-                       design_point_constraints=not analysis, wake_samples=wake_samples)
+                       design_point_constraints=not analysis, wake_samples=wake_samples, wake_core_rel=wake_core_rel)
     mission = ga_mission(vehicle, nodes=nodes, cruise_distance_m=cruise_distance_nmi * NMI,
                          reserve_cruise_distance_m=reserve_cruise_distance_nmi * NMI,
                          cruise_altitude_m=cruise_altitude_ft * FT, cruise_speed_mps=cruise_speed_mph * MPH,

@@ -31,6 +31,7 @@ from mdo.core.units import FT, MPH, NMI
 from mdo.mission.profiles import ga_mission
 from mdo.nlp import Problem
 from mdo.studies import AIRCRAFT_OPTIONS, minimize_battery_energy
+from mdo.wake import DEFAULT_CORE_REL, DEFAULT_STRIP_SAMPLES
 from mdo.vehicle.aircraft import Aircraft, DesignBounds
 from mdo.vehicle.catalog import design_rpm_for_tip_mach, ga8p
 
@@ -70,7 +71,7 @@ def build(analysis: bool = False, n_props: int = 8, nodes: int = 6, cruise_dista
           n_stations: int = 16, wing_strips: int = 24, mass_model: str = "buildup", rotation: str = "inboard_up",
           coupling: str = "swirl", swirl_recovery: str = "bounded", limits: bool = True,
           tip_mach_limit: str = "nodes", allow_regeneration: bool = False, max_span_m: float | None = None,
-          approach_drag_area_m2: float = 0.40, wake_samples: int = 5, trim: bool = True, wing_viscous: bool | None = None,
+          approach_drag_area_m2: float = 0.40, wake_samples: int = DEFAULT_STRIP_SAMPLES, wake_core_rel: float = DEFAULT_CORE_REL, trim: bool = True, wing_viscous: bool | None = None,
           blown_profile_drag: bool = True):
     cfg, _ = family_config(n_props, rotation)
     cfg = replace(cfg, battery=replace(cfg.battery, cells_series=cells_series, cells_parallel=cells_parallel),
@@ -79,7 +80,7 @@ def build(analysis: bool = False, n_props: int = 8, nodes: int = 6, cruise_dista
     vehicle = Aircraft(cfg, trim=trim, wing_viscous=wing_viscous, blown_profile_drag=blown_profile_drag, free=("rotor", "wing"), n_stations=n_stations, wing_strips=wing_strips,
                        mass_model=mass_model, coupling=coupling, swirl_recovery=swirl_recovery, limits=limits,
                        tip_mach_limit=tip_mach_limit, allow_regeneration=allow_regeneration, max_span_m=max_span_m,
-                       design_point_constraints=not analysis, wake_samples=wake_samples)
+                       design_point_constraints=not analysis, wake_samples=wake_samples, wake_core_rel=wake_core_rel)
     mission = ga_mission(vehicle, nodes=nodes, cruise_distance_m=cruise_distance_nmi * NMI,
                          reserve_cruise_distance_m=reserve_cruise_distance_nmi * NMI,
                          cruise_altitude_m=cruise_altitude_ft * FT, cruise_speed_mps=cruise_speed_mph * MPH,

@@ -53,7 +53,7 @@ Options (``-o KEY=VALUE``): ``nodes`` per segment (6), ``pitch`` (control), ``tr
 ``reserve_cruise_distance_nmi`` (5), ``cruise_altitude_ft``, ``cruise_speed_mph``,
 ``cells_series``/``cells_parallel`` (150/140), ``max_cell_current_A`` (15) and ``max_charge_current_A`` (4, above), ``swirl_recovery``, ``limits``,
 ``tip_mach_limit``, ``allow_regeneration`` (on here, above), ``n_stations`` (16), ``n_azimuth`` (4, transition
-segments only), ``wing_strips`` (16 per wing), ``mass_model``, ``rotation``, ``coupling``, ``wake_samples`` (5, as GA-2P),
+segments only), ``wing_strips`` (16 per wing), ``mass_model``, ``rotation``, ``coupling``, ``wake_samples`` (7, as GA-2P), ``wake_core_rel`` (0.1),
 ``trajectory`` ("prescribed": Table 5's speeds and rates; "free": every forward-flight segment's
 speeds and duration are controls within the envelope of ``mdo.mission.trajectory`` - the
 transitions from and to the hover included, the vertical segments kept - with the altitudes and
@@ -85,6 +85,7 @@ from mdo.mission.profiles import evtol_mission
 from mdo.nlp import Problem
 from mdo.studies import (AIRCRAFT_OPTIONS, AIRFRAME_OPTIONS, TRAJECTORY_OPTIONS, airframe_variant,
                          minimize_battery_energy, trajectory_envelope)
+from mdo.wake import DEFAULT_CORE_REL, DEFAULT_STRIP_SAMPLES
 from mdo.vehicle.aircraft import Aircraft
 from mdo.vehicle.catalog import ttw
 
@@ -133,7 +134,7 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
           n_stations: int = 16, n_azimuth: int = 4, wing_strips: int = 16, mass_model: str = "buildup",
           rotation: str = "inboard_up", coupling: str = "swirl", swirl_recovery: str = "bounded",
           limits: bool = True, tip_mach_limit: str = "nodes", allow_regeneration: bool = True,
-          wake_samples: int = 5, tol: float = 1e-8, pitch: str = "control",
+          wake_samples: int = DEFAULT_STRIP_SAMPLES, wake_core_rel: float = DEFAULT_CORE_REL, tol: float = 1e-8, pitch: str = "control",
           motor_model: str = "pmsm", sections: str = "as_defined", leakage_fraction: float | None = None,
           nacelle_slipstream: bool = True, cooling_drag: bool = True, airframe_calibration: float | None = None,
           wing_mass: str = "bending", max_tip_deflection_pct: float | None = None,
@@ -152,7 +153,7 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
     vehicle = Aircraft(cfg, trim=trim, wing_viscous=wing_viscous, blown_profile_drag=blown_profile_drag, n_stations=n_stations, n_azimuth=n_azimuth, wing_strips=wing_strips,
                        mass_model=mass_model, coupling=coupling, swirl_recovery=swirl_recovery, limits=limits,
                        tip_mach_limit=tip_mach_limit, allow_regeneration=allow_regeneration,
-                       design_point_constraints=not analysis, wake_samples=wake_samples, pitch=pitch, tilt=tilt,
+                       design_point_constraints=not analysis, wake_samples=wake_samples, wake_core_rel=wake_core_rel, pitch=pitch, tilt=tilt,
                        max_span_m=max_span_m)
     attitude = {} if cabin_attitude_deg is None else \
         {"body_angle_bounds_rad": (-cabin_attitude_deg * DEG, cabin_attitude_deg * DEG)}

@@ -78,7 +78,8 @@ from ..core.atmosphere import atmosphere
 from ..core.errors import InputError
 from ..core.smooth import smooth_min
 from ..powertrain import Bus
-from ..wake import influence_sum_parts
+from ..wake import DEFAULT_CORE_REL, DEFAULT_STRIP_SAMPLES, influence_sum_parts
+from ..wake.mean import table_core_rels
 from .aircraft_drag import AirframeDragMixin
 from .aircraft_geometry import AircraftGeometryMixin
 from .aircraft_tilt import WingTiltMixin
@@ -91,6 +92,15 @@ from .rotor_group import RotorGroupModel
 from .viscous_wing import viscous_rows, viscous_unknowns, viscous_upwash
 
 __all__ = ["Aircraft", "DesignBounds"]
+
+
+def _checked_core(core_rel) -> float:
+    """``wake_core_rel`` if a mean-wake table ships for it (``mdo.wake.mean``), else an InputError."""
+    allowed = table_core_rels()
+    if not any(abs(float(core_rel) - c) < 1e-9 for c in allowed):
+        raise InputError("wake_core_rel", "one of " + ", ".join(f"{c:g}" for c in allowed)
+                         + f" (the mean-wake tables that ship), got {core_rel!r}")
+    return float(core_rel)
 
 
 @dataclass
@@ -150,8 +160,12 @@ class Aircraft(AircraftGeometryMixin, AirframeDragMixin, WingTiltMixin):
     swirl_recovery : ``"bounded"`` (default) or ``"unbounded"`` (the near-field credit as is).
     max_span_m : a hangar/gate limit on every lifting wing's span (None: none).
     wake_samples : points across each lattice strip over which the propeller wake is
-        averaged (default 5; 1 = at the control point, which makes the energy ripple
-        with the rotor position, see mdo/README.md).
+        averaged (``mdo.wake.DEFAULT_STRIP_SAMPLES``, 7; 1 = at the control point, which
+        makes the energy ripple with the rotor position, see mdo/README.md).
+    wake_core_rel : the wake filaments' core radius / the radius of their helix
+        (``mdo.wake.DEFAULT_CORE_REL``, 0.1; tables ship for 0.05 and 0.1): the width over
+        which the averaged slipstream's edge rises.  It must exceed the spacing of the wake
+        samples across a strip, or the energy ripples with the rotor position (mdo/README.md).
     pitch : ``"control"`` (variable-pitch groups fly their collective as a control) or
         ``"schedule"`` (the segments' ``pitch_command_rad``).
     tilt : ``"schedule"`` (default: the segments' ``wing_mounted_angle_rad``, Table 5) or
@@ -187,7 +201,8 @@ class Aircraft(AircraftGeometryMixin, AirframeDragMixin, WingTiltMixin):
                  swirl_recovery: str = "bounded", max_span_m: float | None = None,
                  bounds: DesignBounds | None = None,
                  positions_free: bool | None = None, design_point_constraints: bool = True,
-                 wing_stall: bool | None = None, slipstream_breaks: bool = False, wake_samples: int = 5,
+                 wing_stall: bool | None = None, slipstream_breaks: bool = False, wake_samples: int = DEFAULT_STRIP_SAMPLES,
+                 wake_core_rel: float = DEFAULT_CORE_REL,
                  pitch: str = "control", tilt: str = "schedule", trim: bool = True, wing_viscous: bool | None = None,
                  blown_profile_drag: bool = True):
         self._check_options(config, free, coupling, mass_model, tip_mach_limit, swirl_recovery, wake_samples,
@@ -223,6 +238,7 @@ class Aircraft(AircraftGeometryMixin, AirframeDragMixin, WingTiltMixin):
         # wake velocity averaged over this many points across each strip (1: at the
         # control point; see the class docstring and tests/bench/position_sweep.py)
         self.wake_samples = int(wake_samples)
+        self.wake_core_rel = _checked_core(wake_core_rel)
         # design-point tip Mach and disk clearance; off for the analysis of a design that violates them (GA-8P)
         self.design_point_constraints = bool(design_point_constraints)
         self.bounds = bounds or DesignBounds()

@@ -101,7 +101,8 @@ class AircraftGeometryMixin:
             for s in (1.0, -1.0):   # starboard, port
                 ys = s * y
                 center = ca.vertcat(x, ys, z) if any(isinstance(c, ca.MX) for c in (x, ys, z)) else (x, ys, z)
-                rotors.append(WakeRotor(center, (1.0, 0.0, 0.0), R, edges, g.blades, spin_for(s, g.rotation)))
+                rotors.append(WakeRotor(center, (1.0, 0.0, 0.0), R, edges, g.blades, spin_for(s, g.rotation),
+                                        core_rel=self.wake_core_rel))
         return rotors
 
     def _build_geometry(self, problem):

@@ -13,11 +13,12 @@ external_velocity, vlm_wake_inputs the coupling into the wing's VLM (coupling.py
 from .biot_savart import filament_kernel, filament_velocity, ring_kernel, ring_velocity
 from .frames import rotor_frame, spin_for
 from .helical import full_wake_function, full_wake_velocity, wake_segments_function
-from .mean import apply_influence, influence, influence_function, jump_matrix, mean_wake_velocity, unit_cylinder
+from .mean import (DEFAULT_STRIP_SAMPLES, apply_influence, influence, influence_function, jump_matrix,
+                   mean_wake_velocity, unit_cylinder)
 from .rotor import DEFAULT_CORE_REL, WakeRotor, element_edges
 
 __all__ = [
-    "WakeRotor", "element_edges", "DEFAULT_CORE_REL",
+    "WakeRotor", "element_edges", "DEFAULT_CORE_REL", "DEFAULT_STRIP_SAMPLES",
     "rotor_frame", "spin_for",
     "filament_kernel", "filament_velocity", "ring_kernel", "ring_velocity",
     "full_wake_function", "full_wake_velocity", "wake_segments_function",

@@ -60,13 +60,20 @@ import numpy as np
 
 from ..core.errors import InputError
 from .frames import rotor_frame
+from .rotor import DEFAULT_CORE_REL
 
 __all__ = ["unit_cylinder", "influence_function", "influence", "strip_averaged_influence", "apply_influence", "influence_parts",
-           "mean_wake_velocity", "jump_matrix", "TABLE_CORE_REL"]
+           "mean_wake_velocity", "jump_matrix", "TABLE_CORE_REL", "table_core_rels",
+           "DEFAULT_STRIP_SAMPLES"]
 
 _DATA = Path(__file__).with_name("data")
-TABLE_CORE_REL = 0.05
+TABLE_CORE_REL = DEFAULT_CORE_REL  # the default table: the one of the default core
 _AXIS_REG = 1e-3  # ρ regularization / R
+
+
+def table_core_rels() -> tuple:
+    """The core sizes (core / radius) for which a mean-wake table ships, ascending."""
+    return tuple(sorted(float(np.load(f)["core_rel"]) for f in _DATA.glob("cylinder_table_core*.npz")))
 
 
 @functools.lru_cache(maxsize=None)
@@ -213,12 +220,19 @@ def influence(points, rotor):
              ca.DM(np.asarray(rotor.s_edges)), rotor.spin)
 
 
-def strip_averaged_influence(points, spans, rotor, samples: int):
+#: wake samples across each lattice strip (:func:`strip_averaged_influence`).  With the default core
+#: (``DEFAULT_CORE_REL``, 0.1) seven keep the strip-mean velocity from rippling as a slipstream edge
+#: moves across a strip: on a GA-2P-like strip row the ripple's slope in the scrubbed dynamic
+#: pressure is 0.4 times its trend's with seven, 3.7 times with five (tests/test_wake_coupling.py).
+DEFAULT_STRIP_SAMPLES = 7
+
+
+def strip_averaged_influence(points, spans, rotor, samples: int = DEFAULT_STRIP_SAMPLES):
     """The factored influence averaged over each lattice strip's span.
 
     A control point sees the wake at one spanwise station, but its strip's flow
-    tangency stands for the whole strip: when a slipstream edge (core 0.05 R, a few
-    cm) crosses a control point, that strip's loading jumps, and the mission energy
+    tangency stands for the whole strip: when a slipstream edge (a few cm wide)
+    crosses a control point, that strip's loading jumps, and the mission energy
     ripples with the period of the lattice as a rotor moves (measured on GA-2P: ±0.35
     kWh over 0.03 of the semispan, ``tests/bench/position_sweep.py``).  Here the
     velocity is the mean over ``samples`` points p + ((s + ½)/S − ½) l, s = 0..S−1,

@@ -9,7 +9,11 @@ from ..core.errors import InputError
 
 __all__ = ["WakeRotor", "element_edges", "DEFAULT_CORE_REL"]
 
-DEFAULT_CORE_REL = 0.05  # filament core / radius of its helix; mean-wake tables ship for 0.05 and 0.1
+# filament core / radius of its helix (mean-wake tables ship for 0.05 and 0.1).  0.1: the
+# blade-passage-averaged slipstream edge is then smoothed over about 0.27 R (10-90 %), wider than
+# the spacing of an aircraft's wake samples across a strip (GA-2P: 0.09 R), so the mission energy
+# does not ripple as a rotor moves along the span (mdo/README.md, "the slipstream's edge").
+DEFAULT_CORE_REL = 0.10
 
 
 @dataclass(frozen=True)
