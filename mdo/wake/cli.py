@@ -23,6 +23,7 @@ import numpy as np
 
 from ..core.errors import InputError, check_finite_result, parse_choice, parse_float, parse_grid, parse_int
 from ..core.output import check_new_file, write_new_file
+from .rotor import DEFAULT_CORE_REL
 
 __all__ = ["register"]
 
@@ -72,8 +73,9 @@ def _cmd_velocity(args) -> int:
     g = _gamma(args)
     model = parse_choice("--model", args.model, ("mean", "full"))
     if model == "mean":
+        from .mean import table_core_rels
         core = float(parse_choice("--core-rel", f"{parse_float('--core-rel', args.core_rel, 0, 1):g}",
-                                  ("0.05", "0.1")))
+                                  tuple(f"{c:g}" for c in table_core_rels())))
     else:
         core = parse_float("--core-rel", args.core_rel, 0.0, 1.0, lower_open=True)
     y = parse_grid("--y", args.y, *Y_RANGE_M, MAX_POINTS, "m")
@@ -127,9 +129,9 @@ def register(subparsers) -> None:
                    help="full model: blade positions averaged, an integer in [1, 36] (default 1)")
     v.add_argument("--rotations", default="5", metavar="N",
                    help="full model: wake length in rotor revolutions, (0, 100] (default 5)")
-    v.add_argument("--core-rel", default="0.05", metavar="C",
+    v.add_argument("--core-rel", default=f"{DEFAULT_CORE_REL:g}", metavar="C",
                    help="vortex core radius / tip radius: 0.05 or 0.1 for the mean model (its tables), "
-                        "(0, 1] for the full one (default 0.05)")
+                        f"(0, 1] for the full one (default {DEFAULT_CORE_REL:g}, the aircraft's)")
     v.add_argument("--out", metavar="FILE.csv", help="output file (default stdout); never replaced without --force")
     v.add_argument("--force", action="store_true", help="replace an existing --out file")
     v.set_defaults(func=_cmd_velocity)
