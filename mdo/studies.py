@@ -6,6 +6,7 @@ from __future__ import annotations
 from .core.units import KWH
 from .plots import figure_report
 from .vehicle.reports import add_vehicle_reports
+from .wake.mean import table_core_rels
 
 __all__ = ["minimize_battery_energy", "AIRCRAFT_OPTIONS", "AIRFRAME_OPTIONS", "airframe_variant"]
 
@@ -29,7 +30,7 @@ AIRCRAFT_OPTIONS = {
     "tip_mach_limit": (str, "nodes", "design_point", "off"),
     "allow_regeneration": (bool,),
     "wake_samples": (int, 1, 15),
-    "wake_core_rel": (float, 0.05, 0.1),
+    "wake_core_rel": (float, min(table_core_rels()), max(table_core_rels())),   # the shipped tables' range
     "trim": (bool,),
     "wing_viscous": (bool,),
     "blown_profile_drag": (bool,),

@@ -34,7 +34,7 @@ from mdo.core.units import FT, INCH, KNOT, MPH, NMI
 from mdo.mission import Mission
 from mdo.mission.profiles import ga_segments
 from mdo.nlp import Problem
-from mdo.studies import minimize_battery_energy
+from mdo.studies import AIRCRAFT_OPTIONS, minimize_battery_energy
 from mdo.wake import DEFAULT_CORE_REL
 from mdo.vehicle.aircraft import Aircraft
 from mdo.vehicle.catalog import GA_CG_Z_M, GA_STABILATOR_RANGE_DEG
@@ -97,7 +97,7 @@ OPTIONS = {
     "wing_strips": (int, 8, 60),
     "n_stations": (int, 6, 40),
     "approach_speed_kn": (float, 60.0, 120.0),
-    "wake_core_rel": (float, 0.05, 0.1),
+    "wake_core_rel": AIRCRAFT_OPTIONS["wake_core_rel"],
 }
 
 

@@ -208,3 +208,13 @@ def test_the_default_slipstream_edge_and_samples_do_not_ripple():
     assert _scrubbed_q_ripple(0.05, 5) > 5.0
     assert _scrubbed_q_ripple(0.1, 5) > 2.0
     assert _scrubbed_q_ripple(wake.DEFAULT_CORE_REL, wake.DEFAULT_STRIP_SAMPLES) < 0.7
+
+
+def test_the_mean_wake_refuses_a_core_without_its_table():
+    """A core between the shipped tables is an input error, not the nearest table's field (the
+    file name used to round 0.051 to the 0.05 table while the swirl step used 0.051)."""
+    from mdo.core.errors import InputError
+    rot = wake.WakeRotor(center=(0.0, 0.0, 0.0), axis=(1, 0, 0), radius_m=1.0, s_edges=np.linspace(0.2, 1.0, 5),
+                         blades=3, spin=1, core_rel=0.051)
+    with pytest.raises(InputError, match="core_rel: one of 0.05, 0.1"):
+        wake.mean_wake_velocity(np.array([[1.0], [0.5], [0.0]]), rot, np.full(4, 10.0), 150.0, 70.0)

@@ -79,7 +79,7 @@ from ..core.errors import InputError
 from ..core.smooth import smooth_min
 from ..powertrain import Bus
 from ..wake import DEFAULT_CORE_REL, DEFAULT_STRIP_SAMPLES, influence_sum_parts
-from ..wake.mean import table_core_rels
+from ..wake.mean import checked_table_core
 from .aircraft_drag import AirframeDragMixin
 from .aircraft_geometry import AircraftGeometryMixin
 from .aircraft_tilt import WingTiltMixin
@@ -92,15 +92,6 @@ from .rotor_group import RotorGroupModel
 from .viscous_wing import viscous_rows, viscous_unknowns, viscous_upwash
 
 __all__ = ["Aircraft", "DesignBounds"]
-
-
-def _checked_core(core_rel) -> float:
-    """``wake_core_rel`` if a mean-wake table ships for it (``mdo.wake.mean``), else an InputError."""
-    allowed = table_core_rels()
-    if not any(abs(float(core_rel) - c) < 1e-9 for c in allowed):
-        raise InputError("wake_core_rel", "one of " + ", ".join(f"{c:g}" for c in allowed)
-                         + f" (the mean-wake tables that ship), got {core_rel!r}")
-    return float(core_rel)
 
 
 @dataclass
@@ -238,7 +229,7 @@ class Aircraft(AircraftGeometryMixin, AirframeDragMixin, WingTiltMixin):
         # wake velocity averaged over this many points across each strip (1: at the
         # control point; see the class docstring and tests/bench/position_sweep.py)
         self.wake_samples = int(wake_samples)
-        self.wake_core_rel = _checked_core(wake_core_rel)
+        self.wake_core_rel = checked_table_core(wake_core_rel, "wake_core_rel")
         # design-point tip Mach and disk clearance; off for the analysis of a design that violates them (GA-8P)
         self.design_point_constraints = bool(design_point_constraints)
         self.bounds = bounds or DesignBounds()

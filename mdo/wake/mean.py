@@ -63,7 +63,7 @@ from .frames import rotor_frame
 from .rotor import DEFAULT_CORE_REL
 
 __all__ = ["unit_cylinder", "influence_function", "influence", "strip_averaged_influence", "apply_influence", "influence_parts",
-           "mean_wake_velocity", "jump_matrix", "TABLE_CORE_REL", "table_core_rels",
+           "mean_wake_velocity", "jump_matrix", "TABLE_CORE_REL", "table_core_rels", "checked_table_core",
            "DEFAULT_STRIP_SAMPLES"]
 
 _DATA = Path(__file__).with_name("data")
@@ -71,17 +71,25 @@ TABLE_CORE_REL = DEFAULT_CORE_REL  # the default table: the one of the default c
 _AXIS_REG = 1e-3  # ρ regularization / R
 
 
+@functools.lru_cache(maxsize=None)
 def table_core_rels() -> tuple:
     """The core sizes (core / radius) for which a mean-wake table ships, ascending."""
     return tuple(sorted(float(np.load(f)["core_rel"]) for f in _DATA.glob("cylinder_table_core*.npz")))
 
 
+def checked_table_core(core_rel, field: str = "core_rel") -> float:
+    """``core_rel`` if a mean-wake table ships for it, else an InputError naming ``field`` and the
+    allowed values (the one check for the wake's rotors, the aircraft's option and the CLI)."""
+    allowed = table_core_rels()
+    if not any(abs(float(core_rel) - c) < 1e-9 for c in allowed):
+        raise InputError(field, "one of " + ", ".join(f"{c:g}" for c in allowed)
+                         + f" (the mean-wake tables that ship), got {core_rel!r}")
+    return float(core_rel)
+
+
 @functools.lru_cache(maxsize=None)
 def _table(core_rel: float = TABLE_CORE_REL):
-    name = _DATA / f"cylinder_table_core{round(core_rel * 100):03d}.npz"
-    if not name.exists():
-        raise InputError("core_rel", f"no mean-wake table for core {core_rel:g}; available: "
-                         + ", ".join(p.stem for p in _DATA.glob("cylinder_table_core*.npz")))
+    name = _DATA / f"cylinder_table_core{round(checked_table_core(core_rel) * 100):03d}.npz"
     d = np.load(name)
     tx, ty = d["knots_xi"], d["knots_eta"]
     cx = np.asarray(d["coef_ux"], float).ravel(order="F")
