@@ -34,6 +34,7 @@ AIRCRAFT_OPTIONS = {
     "trim": (bool,),
     "wing_viscous": (bool,),
     "blown_profile_drag": (bool,),
+    "engine_out": (str, "rudder", "off"),
 }
 
 #: the free-trajectory options of a problem that offers them (problems/ga2p.py, ga8p.py)

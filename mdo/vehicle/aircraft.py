@@ -176,6 +176,9 @@ class Aircraft(AircraftGeometryMixin, AirframeDragMixin, WingTiltMixin):
         for a tilt-wing.  With ``wing_stall`` as well (a tilt-wing asked for it), the one-pass
         post-stall strips apply at the nodes of segments that are not wing-borne (negative
         ``stall_margin_cl``: the transitions) and the correction at every other node.
+    engine_out : ``"rudder"`` (default for airplanes): at every wing-borne node the fins' rudder
+        holds the yaw of each outboard motor's mirror at take-off power with that motor failed
+        (:mod:`mdo.vehicle.engine_out`); ``"off"`` (default for a tilt-wing).
     blown_profile_drag : the strips' profile drag at the dynamic pressure of the whole wake at
         their control points (the slipstream's axial part included: a blown strip is scrubbed at
         the slipstream's speed); on by default.  Off, the strips read the lattice's local velocity,
@@ -195,9 +198,10 @@ class Aircraft(AircraftGeometryMixin, AirframeDragMixin, WingTiltMixin):
                  wing_stall: bool | None = None, slipstream_breaks: bool = False, wake_samples: int = DEFAULT_STRIP_SAMPLES,
                  wake_core_rel: float = DEFAULT_CORE_REL,
                  pitch: str = "control", tilt: str = "schedule", trim: bool = True, wing_viscous: bool | None = None,
-                 blown_profile_drag: bool = True):
+                 blown_profile_drag: bool = True, engine_out: str | None = None):
         self._check_options(config, free, coupling, mass_model, tip_mach_limit, swirl_recovery, wake_samples,
                             stall_margin_cl, max_span_m, pitch, tilt, trim)
+        self.engine_out = self._engine_out_option(config, engine_out)
         self.config = config
         self.name = config.name
         self.free = set(free)
@@ -277,6 +281,19 @@ class Aircraft(AircraftGeometryMixin, AirframeDragMixin, WingTiltMixin):
             raise InputError("max_span_m", f"in [0.5, 100] m, got {max_span_m!r}")
         if tilt == "control" and not any(w.tilting for w in config.wings):
             raise InputError("tilt", "'control' needs a wing with tilting=True (a tilt-wing)")
+
+    @staticmethod
+    def _engine_out_option(config, engine_out):
+        """``engine_out``: None is "rudder" for an airplane, "off" for a tilt-wing (its rotor
+        failure is a hover and transition case of the remaining rotors, not modelled)."""
+        if engine_out is None:
+            engine_out = "rudder" if config.kind == "airplane" else "off"
+        if engine_out not in ("rudder", "off"):
+            raise InputError("engine_out", f"one of 'rudder', 'off', got {engine_out!r}")
+        if engine_out == "rudder" and not config.fins:
+            raise InputError("engine_out", "'rudder' needs a fin (a wing with role 'fin') to hold the yaw of a "
+                             "failed motor; add one or set engine_out='off' and say how the yaw is held")
+        return engine_out
 
     # ------------------------------------------------------------------ compatibility views
     @property

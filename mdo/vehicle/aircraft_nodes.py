@@ -1,7 +1,8 @@
 """What an :class:`~mdo.vehicle.aircraft.Aircraft` states at its nodes, apart from its
 physics: the operating limits (named constraint groups, issue 16: motor power, torque,
 speed and throttle per rotor group, helical tip Mach, cell current and voltage, charging,
-the strips' stall margin) and the outputs that become the columns of ``mission.csv``.
+the strips' stall margin, the rudder's hold of a failed motor's yaw) and the outputs that become
+the columns of ``mission.csv``.
 Both read the node's rotor, powertrain and aerodynamic results that ``Aircraft.evaluate``
 computed; nothing here adds a variable.
 """
@@ -13,6 +14,7 @@ import numpy as np
 from ..core import units as u
 from .balance import surface_lift_N
 from .base import G0, Output, ResidualGroup
+from .engine_out import engine_out_moments, engine_out_rows
 from .stall import stall_margin_rows
 
 __all__ = ["operating_limits", "node_outputs", "wing_design_lift_rows"]
@@ -75,6 +77,8 @@ def operating_limits(ac, nodes, rot, po, aero, env) -> list:
     if expr is not None:
         out.append(ResidualGroup("stall margin", expr, kind="<=", scale=0.1, unit="-", row_labels=labels,
                                  columns=cols))
+    if ac.engine_out == "rudder":   # the wing-borne nodes: where the rudder and not the rotors fly it
+        out += engine_out_rows(ac, nodes, rot, env, _stall_margin(ac, nodes, K) >= 0.0)
     return out
 
 
@@ -160,6 +164,16 @@ def node_outputs(ac, nodes, rot, aero, po, env) -> dict:
                                                       f"{w.name}: incidence added for pitch trim")
         out[f"{w.name}.lift_N"] = Output(surface_lift_N(ac.vlm, r, names.index(w.name), env["rho"], V), "N",
                                          f"{w.name}: lift of the surface (negative: a download)")
+    if ac.fins:   # the engine-out limit's two sides (mdo.vehicle.engine_out), at every node
+        N_rudder, demand = engine_out_moments(ac, env)
+        out["rudder_yaw_moment_Nm"] = Output(N_rudder, "N m", "the fins' largest rudder yawing moment")
+        for gm in ac.groups:
+            worst = demand[gm.name][0]
+            for d in demand[gm.name][1:]:   # (an output: the largest of the positions, not smooth)
+                worst = ca.fmax(worst, d)
+            out[f"{gm.name}.engine_out_yaw_moment_Nm"] = Output(
+                worst, "N m", f"{gm.name}: yawing moment with its outermost motor failed and its mirror at "
+                              "take-off power (momentum theory)")
     for i, gm in enumerate(ac.groups):
         o, mo, g = rot[gm.name], po["groups"][gm.name], gm.config
         tip = ca.sqrt((o["omega"] * gm.design["R"]) ** 2 + V * V) / env["a_s"]

@@ -71,8 +71,18 @@ class WingConfig:
     # an all-moving surface (a stabilator): its incidence, added to ``incidence_deg``, is the
     # pitch-trim control at every trimmed node, within these stops (deg); None: fixed
     trim_incidence_range_deg: tuple | None = None
+    # a fin's rudder (read by the engine-out limit, mdo.vehicle.engine_out): its chord over the
+    # fin's, its largest deflection, and the loss of effectiveness at that deflection.  Rudders
+    # span 25-50 % of the tail chord and deflect 25-30 deg (Raymer, Aircraft Design 6th ed.,
+    # sec. 6.6); 0.7 at 25 deg for a plain flap (Roskam, Airplane Design VI, Fig. 8.13)
+    rudder_chord_fraction: float = 0.3
+    rudder_max_deflection_deg: float = 25.0
+    rudder_effectiveness_factor: float = 0.7
 
     def __post_init__(self):
+        check_range(f"{self.name}.rudder_chord_fraction", self.rudder_chord_fraction, 0.05, 0.8)
+        check_range(f"{self.name}.rudder_max_deflection_deg", self.rudder_max_deflection_deg, 0.0, 40.0, "deg")
+        check_range(f"{self.name}.rudder_effectiveness_factor", self.rudder_effectiveness_factor, 0.0, 1.0)
         if self.role not in WING_ROLES:
             raise InputError(f"{self.name}.role", f"one of {', '.join(WING_ROLES)}, got {self.role!r}")
         lo, hi = (float(x) for x in self.flap_span_eta)
@@ -237,6 +247,9 @@ class RotorGroupConfig:
     rotation: str = "inboard_up"
     tip_mach_max: float = 0.6
     folded_drag_area_m2: float = 0.0   # flat-plate area of one stopped/folded rotor (segments that switch it off)
+    # drag of one failed rotor on its disk area (the engine-out limit, mdo.vehicle.engine_out):
+    # 0 for a feathered or stopped-and-aligned propeller; a windmilling fixed-pitch one is well above
+    inoperative_drag_coefficient: float = 0.0
     nacelle_wetted_area_m2: float = 0.0  # wetted area of the nacelle of ONE rotor (drag and mass)
     # Raymer sec. 12.5.5: a nacelle mounted on the wing 1.5, within one diameter 1.3, farther 1.0
     nacelle_interference: float = 1.5
@@ -260,6 +273,7 @@ class RotorGroupConfig:
             raise InputError(f"{self.name}.motor", f"a MotorConfig, got {type(self.motor).__name__}")
         check_range(f"{self.name}.tip_mach_max", self.tip_mach_max, 0.1, 0.95)
         check_range(f"{self.name}.folded_drag_area_m2", self.folded_drag_area_m2, 0.0, 5.0, "m^2")
+        check_range(f"{self.name}.inoperative_drag_coefficient", self.inoperative_drag_coefficient, 0.0, 1.5)
         check_range(f"{self.name}.nacelle_wetted_area_m2", self.nacelle_wetted_area_m2, 0.0, 50.0, "m^2")
         check_range(f"{self.name}.nacelle_interference", self.nacelle_interference, 0.8, 2.0)
         if self.rotation not in ("inboard_up", "outboard_up"):
