@@ -21,7 +21,9 @@ stabilator, the CG held by the static margin; mdo.vehicle.balance), ``cruise_dis
 wing forces, see mdo/wake/README.md), ``swirl_recovery`` ("bounded": the swirl credit
 never exceeds the swirl power the slipstreams carry; "unbounded"), ``limits`` (true),
 ``tip_mach_limit`` ("nodes", "design_point" or "off"), ``allow_regeneration`` (false),
-``max_span_m`` (none: a hangar/gate limit), ``approach_drag_area_m2`` (0.40 m^2, ``GA_APPROACH_DRAG_AREA_M2``:
+``max_span_m`` (none: a hangar/gate limit), ``engine_out`` ("rudder": the fin's rudder holds a
+failed propeller's mirror at take-off power at every wing-borne node, ``mdo.vehicle.engine_out``;
+"off"), ``approach_drag_area_m2`` (0.40 m^2, ``GA_APPROACH_DRAG_AREA_M2``:
 gear and flap drag the pilot may add on BL and FA, a control per node; without it and
 without battery charging the clean airframe cannot slow down on the base leg), ``wake_samples`` (7),
 ``wake_core_rel`` (0.1: the width of the slipstream's edge, mdo.wake.DEFAULT_CORE_REL),

@@ -54,6 +54,8 @@ Options (``-o KEY=VALUE``): ``nodes`` per segment (6), ``pitch`` (control), ``tr
 ``cells_series``/``cells_parallel`` (150/140), ``max_cell_current_A`` (15) and ``max_charge_current_A`` (4, above), ``swirl_recovery``, ``limits``,
 ``tip_mach_limit``, ``allow_regeneration`` (on here, above), ``n_stations`` (16), ``n_azimuth`` (4, transition
 segments only), ``wing_strips`` (16 per wing), ``mass_model``, ``rotation``, ``coupling``, ``wake_samples`` (7, as GA-2P), ``wake_core_rel`` (0.1),
+``engine_out`` ("off", a tilt-wing's default: a rotor failure is held by the remaining rotors, not modelled;
+"rudder" checks the fin at the wing-borne nodes),
 ``trajectory`` ("prescribed": Table 5's speeds and rates; "free": every forward-flight segment's
 speeds and duration are controls within the envelope of ``mdo.mission.trajectory`` - the
 transitions from and to the hover included, the vertical segments kept - with the altitudes and

@@ -28,7 +28,9 @@ mdo/wake/README.md) - stated, and an option.
 
 Options (``-o KEY=VALUE``): ``nodes`` (6), ``cruise_distance_nmi`` (12.5, the sizing profile), ``approach_speed_kn`` (75.4),
 ``reserve_cruise_distance_nmi`` (5), ``cruise_altitude_ft`` (8000), ``cruise_speed_mph``
-(172), ``cells_parallel`` (40), ``coupling`` ("local"), ``wing_strips`` (20), ``n_stations`` (12).
+(172), ``cells_parallel`` (40), ``coupling`` ("local"), ``wing_strips`` (20), ``n_stations`` (12),
+``wake_core_rel`` (0.1), ``engine_out`` ("rudder": the P2006T fin's rudder holds the yaw of a failed
+wing-tip cruise motor's mirror at take-off power, or of a high-lift motor's where they run; "off").
 """
 from mdo.core.units import FT, INCH, KNOT, MPH, NMI
 from mdo.mission import Mission

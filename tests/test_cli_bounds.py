@@ -92,6 +92,7 @@ OPTION_CASES = {
     "cruise_distance_nmi=NaN": (GA2P, "cruise_distance_nmi: a number in [1, 300], got 'NaN'"),
     "cruise_distance_nmi=1e300": (GA2P, "cruise_distance_nmi: a number in [1, 300], got 1e+300"),
     "coupling=wakeless": (GA2P, "coupling: one of swirl, local, freestream, got 'wakeless'"),
+    "engine_out=differential": (GA2P, "engine_out: one of rudder, off, got 'differential'"),
     "wing_strip=30": (GA2P, "wing_strip: unknown option of ga2p.py; allowed: nodes, cruise_distance_nmi"),
     "design_wing_area=3": (POLAR, "design_wing_area: true or false, got 3"),
     "state_form=1": (POLAR, "state_form: one of differentiation, integration, got 1"),

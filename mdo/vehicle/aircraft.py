@@ -39,7 +39,8 @@ inflow angles and pack current as unknowns:
    inequality group at every node (on by
    default): motor power, torque and speed, throttle, tip Mach (``rotor_group``),
    cell current and voltage, no battery charging unless allowed, the wing's stall
-   margin (``stall``), and the state of charge left at the end (``final_limits``).
+   margin (``stall``), an airplane's rudder against a failed motor's yaw (``engine_out``),
+   and the state of charge left at the end (``final_limits``).
 
 Swirl recovery: with the "swirl" coupling the wing's bound vortices see the
 slipstreams' swirl, and the Kutta-Joukowski force along the flight path is a
