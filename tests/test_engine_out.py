@@ -113,5 +113,10 @@ def test_engine_out_default_and_its_errors():
     assert Aircraft(no_fin, engine_out="off", **SMALL).engine_out == "off"
     with pytest.raises(InputError, match="engine_out"):
         Aircraft(ga2p(), engine_out="differential", **SMALL)
+    # a group whose failed motor stops its mirror too needs no rudder: left out of the limit
+    stops = replace(ga2p(), rotor_groups=(replace(ga2p().rotor_groups[0], failure_stops_mirror=True),))
+    p, *_ = _problem(stops)
+    assert "propellers engine-out yaw" not in p.groups
+    assert Aircraft(replace(stops, wings=no_fin.wings), **SMALL).engine_out == "rudder"
     with pytest.raises(InputError, match="rudder_chord_fraction"):
         replace(ga2p().fins[0], rudder_chord_fraction=0.95)

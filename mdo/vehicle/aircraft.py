@@ -291,7 +291,8 @@ class Aircraft(AircraftGeometryMixin, AirframeDragMixin, WingTiltMixin):
             engine_out = "rudder" if config.kind == "airplane" else "off"
         if engine_out not in ("rudder", "off"):
             raise InputError("engine_out", f"one of 'rudder', 'off', got {engine_out!r}")
-        if engine_out == "rudder" and not config.fins:
+        held = [g for g in config.rotor_groups if not g.failure_stops_mirror]
+        if engine_out == "rudder" and held and not config.fins:
             raise InputError("engine_out", "'rudder' needs a fin (a wing with role 'fin') to hold the yaw of a "
                              "failed motor; add one or set engine_out='off' and say how the yaw is held")
         return engine_out

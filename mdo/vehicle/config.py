@@ -250,6 +250,10 @@ class RotorGroupConfig:
     # drag of one failed rotor on its disk area (the engine-out limit, mdo.vehicle.engine_out):
     # 0 for a feathered or stopped-and-aligned propeller; a windmilling fixed-pitch one is well above
     inoperative_drag_coefficient: float = 0.0
+    # True: a failed motor of this group also stops its mirror (a control system's response, as a
+    # distributed-propulsion or wing-tip-motor airplane may have): no yaw for the rudder to hold,
+    # the group is left out of the engine-out limit, and the climb on the motors left is not modelled
+    failure_stops_mirror: bool = False
     nacelle_wetted_area_m2: float = 0.0  # wetted area of the nacelle of ONE rotor (drag and mass)
     # Raymer sec. 12.5.5: a nacelle mounted on the wing 1.5, within one diameter 1.3, farther 1.0
     nacelle_interference: float = 1.5

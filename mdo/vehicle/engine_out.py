@@ -38,8 +38,9 @@ stall margin on) and the group runs::
 Left out, all on the conservative side but the last: the 5 deg bank toward the live
 motor that the rule allows (its side force relieves the fin), the fin's sidewash, the
 rudder pedal force limit, and the failed motor's mirror being throttled back by a
-control system (a distributed-propulsion airplane may do that; then set
-``Aircraft(engine_out="off")`` and state it).  The check is at each node's own speed:
+control system (a distributed-propulsion airplane may do that: a group with
+``failure_stops_mirror=True`` is left out, and the climb on the motors left, which that
+response then needs, is not modelled; ``Aircraft(engine_out="off")`` leaves out every group).  The check is at each node's own speed:
 a certification V_MC at 1.2 V_S1 can be below the slowest speed a mission flies.
 """
 from __future__ import annotations
@@ -143,6 +144,8 @@ def engine_out_rows(ac, nodes, rot, env, wing_borne: np.ndarray) -> list:
     scale = _reference_moment(ac.config)
     out = []
     for gm in ac.groups:
+        if gm.config.failure_stops_mirror:
+            continue
         cols = np.intersect1d(np.flatnonzero(wing_borne), rot[gm.name]["on"])
         if cols.size == 0:
             continue
