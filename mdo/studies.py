@@ -35,6 +35,7 @@ AIRCRAFT_OPTIONS = {
     "wing_viscous": (bool,),
     "blown_profile_drag": (bool,),
     "engine_out": (str, "rudder", "off"),
+    "fin_sizing": (bool,),
 }
 
 #: the free-trajectory options of a problem that offers them (problems/ga2p.py, ga8p.py)

@@ -20,7 +20,7 @@ stabilator, the CG held by the static margin; mdo.vehicle.balance), ``cruise_dis
 ("inboard_up"), ``coupling`` ("swirl", "local" or "freestream": how the wake enters the
 wing forces, see mdo/wake/README.md), ``swirl_recovery`` ("bounded": the swirl credit
 never exceeds the swirl power the slipstreams carry; "unbounded"), ``limits`` (true),
-``tip_mach_limit`` ("nodes", "design_point" or "off"), ``allow_regeneration`` (false),
+``tip_mach_limit`` ("nodes", "design_point" or "off"), ``fin_sizing`` (false; true: the fin's area a design variable, x1 to x3, its rudder moment, drag and mass following it), ``allow_regeneration`` (false),
 ``max_span_m`` (none: a hangar/gate limit), ``engine_out`` ("rudder": the fin's rudder holds a
 failed propeller's mirror at take-off power at every wing-borne node, ``mdo.vehicle.engine_out``;
 "off"), ``approach_drag_area_m2`` (0.40 m^2, ``GA_APPROACH_DRAG_AREA_M2``:
@@ -72,7 +72,7 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
           nacelle_slipstream: bool = True, cooling_drag: bool = True, airframe_calibration: float | None = None,
           wing_mass: str = "bending", max_tip_deflection_pct: float | None = None,
           trim: bool = True, wing_viscous: bool | None = None,
-          blown_profile_drag: bool = True, engine_out: str | None = None):
+          blown_profile_drag: bool = True, engine_out: str | None = None, fin_sizing: bool = False):
     p = Problem("ga2p", "GA-2P whole-mission optimization (Clarke et al. Eq. 7)")
     cfg = ga2p(rotation)
     cfg = replace(cfg, battery=replace(cfg.battery, cells_series=cells_series, cells_parallel=cells_parallel),
@@ -82,7 +82,7 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
     vehicle = Aircraft(cfg, trim=trim, wing_viscous=wing_viscous, blown_profile_drag=blown_profile_drag, n_stations=n_stations, wing_strips=wing_strips, mass_model=mass_model,
                        coupling=coupling, swirl_recovery=swirl_recovery, limits=limits,
                        tip_mach_limit=tip_mach_limit, allow_regeneration=allow_regeneration, max_span_m=max_span_m,
-                       design_point_constraints=not analysis, wake_samples=wake_samples, wake_core_rel=wake_core_rel, engine_out=engine_out)
+                       design_point_constraints=not analysis, wake_samples=wake_samples, wake_core_rel=wake_core_rel, engine_out=engine_out, fin_sizing=fin_sizing)
     mission = ga_mission(vehicle, nodes=nodes, cruise_distance_m=cruise_distance_nmi * NMI,
                          reserve_cruise_distance_m=reserve_cruise_distance_nmi * NMI,
                          cruise_altitude_m=cruise_altitude_ft * FT, cruise_speed_mps=cruise_speed_mph * MPH,

@@ -72,7 +72,7 @@ def build(analysis: bool = False, n_props: int = 8, nodes: int = 6, cruise_dista
           coupling: str = "swirl", swirl_recovery: str = "bounded", limits: bool = True,
           tip_mach_limit: str = "nodes", allow_regeneration: bool = False, max_span_m: float | None = None,
           approach_drag_area_m2: float = 0.40, wake_samples: int = DEFAULT_STRIP_SAMPLES, wake_core_rel: float = DEFAULT_CORE_REL, trim: bool = True, wing_viscous: bool | None = None,
-          blown_profile_drag: bool = True, engine_out: str | None = None):
+          blown_profile_drag: bool = True, engine_out: str | None = None, fin_sizing: bool = False):
     cfg, _ = family_config(n_props, rotation)
     cfg = replace(cfg, battery=replace(cfg.battery, cells_series=cells_series, cells_parallel=cells_parallel),
                   cruise_speed_mps=cruise_speed_mph * MPH, cruise_altitude_m=cruise_altitude_ft * FT)
@@ -80,7 +80,7 @@ def build(analysis: bool = False, n_props: int = 8, nodes: int = 6, cruise_dista
     vehicle = Aircraft(cfg, trim=trim, wing_viscous=wing_viscous, blown_profile_drag=blown_profile_drag, free=("rotor", "wing"), n_stations=n_stations, wing_strips=wing_strips,
                        mass_model=mass_model, coupling=coupling, swirl_recovery=swirl_recovery, limits=limits,
                        tip_mach_limit=tip_mach_limit, allow_regeneration=allow_regeneration, max_span_m=max_span_m,
-                       design_point_constraints=not analysis, wake_samples=wake_samples, wake_core_rel=wake_core_rel, engine_out=engine_out)
+                       design_point_constraints=not analysis, wake_samples=wake_samples, wake_core_rel=wake_core_rel, engine_out=engine_out, fin_sizing=fin_sizing)
     mission = ga_mission(vehicle, nodes=nodes, cruise_distance_m=cruise_distance_nmi * NMI,
                          reserve_cruise_distance_m=reserve_cruise_distance_nmi * NMI,
                          cruise_altitude_m=cruise_altitude_ft * FT, cruise_speed_mps=cruise_speed_mph * MPH,

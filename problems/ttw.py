@@ -141,7 +141,7 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
           nacelle_slipstream: bool = True, cooling_drag: bool = True, airframe_calibration: float | None = None,
           wing_mass: str = "bending", max_tip_deflection_pct: float | None = None,
           tilt: str = "schedule", cabin_attitude_deg: float | None = None, trim: bool = True, wing_viscous: bool | None = None,
-          blown_profile_drag: bool = True, engine_out: str | None = None,
+          blown_profile_drag: bool = True, engine_out: str | None = None, fin_sizing: bool = False,
           trajectory: str = "prescribed", max_block_time_min: float | None = None,
           min_climb_gradient_pct: float | None = None, max_span_m: float | None = None):
     p = Problem("ttw", "TTW tandem tilt-wing whole-mission optimization (Clarke et al. Eq. 7)")
@@ -155,7 +155,7 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
     vehicle = Aircraft(cfg, trim=trim, wing_viscous=wing_viscous, blown_profile_drag=blown_profile_drag, n_stations=n_stations, n_azimuth=n_azimuth, wing_strips=wing_strips,
                        mass_model=mass_model, coupling=coupling, swirl_recovery=swirl_recovery, limits=limits,
                        tip_mach_limit=tip_mach_limit, allow_regeneration=allow_regeneration,
-                       design_point_constraints=not analysis, wake_samples=wake_samples, wake_core_rel=wake_core_rel, engine_out=engine_out, pitch=pitch, tilt=tilt,
+                       design_point_constraints=not analysis, wake_samples=wake_samples, wake_core_rel=wake_core_rel, engine_out=engine_out, fin_sizing=fin_sizing, pitch=pitch, tilt=tilt,
                        max_span_m=max_span_m)
     attitude = {} if cabin_attitude_deg is None else \
         {"body_angle_bounds_rad": (-cabin_attitude_deg * DEG, cabin_attitude_deg * DEG)}

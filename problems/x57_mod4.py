@@ -107,6 +107,7 @@ OPTIONS = {
     "approach_speed_kn": (float, 60.0, 120.0),
     "wake_core_rel": AIRCRAFT_OPTIONS["wake_core_rel"],
     "engine_out": AIRCRAFT_OPTIONS["engine_out"],
+    "fin_sizing": AIRCRAFT_OPTIONS["fin_sizing"],
 }
 
 
@@ -115,11 +116,11 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 1
           cruise_speed_mph: float = 172.0, cells_parallel: int = 40, coupling: str = "local",
           wing_strips: int = 20, n_stations: int = 12, approach_speed_kn: float = APPROACH_SPEED_MPS / KNOT,
           trim: bool = True, wing_viscous: bool | None = None,
-          blown_profile_drag: bool = True, engine_out: str | None = None, wake_core_rel: float = DEFAULT_CORE_REL):
+          blown_profile_drag: bool = True, engine_out: str | None = None, fin_sizing: bool = False, wake_core_rel: float = DEFAULT_CORE_REL):
     p = Problem("x57_mod4", "X-57 Maxwell Mod IV whole-mission optimization (two rotor groups)")
     cfg = x57_mod4(cells_parallel, cruise_speed_mph * MPH, cruise_altitude_ft * FT)
     vehicle = Aircraft(cfg, trim=trim, wing_viscous=wing_viscous, blown_profile_drag=blown_profile_drag, free=("rotor", "wing"), n_stations=n_stations, wing_strips=wing_strips,
-                       coupling=coupling, design_point_constraints=not analysis, wake_core_rel=wake_core_rel, engine_out=engine_out)
+                       coupling=coupling, design_point_constraints=not analysis, wake_core_rel=wake_core_rel, engine_out=engine_out, fin_sizing=fin_sizing)
     folded = {s: {"highlift.active": 0.0} for s in ("CL", "CR", "D", "DL", "RCL", "RCR", "RD")}
     segs = ga_segments(cruise_distance_m=cruise_distance_nmi * NMI,
                        reserve_cruise_distance_m=reserve_cruise_distance_nmi * NMI,

@@ -1,5 +1,7 @@
 """Directional control with one motor failed (mdo.vehicle.engine_out)."""
 import math
+
+import casadi as ca
 from dataclasses import replace
 
 import numpy as np
@@ -120,3 +122,27 @@ def test_engine_out_default_and_its_errors():
     assert Aircraft(replace(stops, wings=no_fin.wings), **SMALL).engine_out == "rudder"
     with pytest.raises(InputError, match="rudder_chord_fraction"):
         replace(ga2p().fins[0], rudder_chord_fraction=0.95)
+
+
+def test_a_sized_fin_moves_its_rudder_moment_drag_and_mass():
+    p, v, m = _problem(ga2p(), fin_sizing=True)
+    s = v.fin_area_scale["vertical_tail"]
+    lo, hi = p.variables["vertical_tail.area_scale"].lower, p.variables["vertical_tail.area_scale"].upper
+    assert (float(np.ravel(lo)[0]), float(np.ravel(hi)[0])) == (1.0, 3.0)
+    out = m.evaluation.outputs
+
+    def at(expr, scale):
+        p.opti.set_initial(s, scale)
+        return np.asarray(p.opti.value(expr, p.opti.initial()), float).ravel()
+
+    np.testing.assert_allclose(at(out["rudder_yaw_moment_Nm"].expr, 2.0), 2 * at(out["rudder_yaw_moment_Nm"].expr, 1.0),
+                               rtol=1e-9)
+    # skin friction at the larger fin's Reynolds number (chords x sqrt 2): a little under twice the drag
+    ratio = at(out["drag_fins_N"].expr, 2.0) / at(out["drag_fins_N"].expr, 1.0)
+    assert np.all((ratio > 1.85) & (ratio < 2.0))
+    from mdo.vehicle.mass import MassDesign, mass_terms
+    key = "vertical tail: vertical_tail"     # Raymer Eq. 15.48: S^0.873 at a held aspect ratio
+    base = MassDesign.baseline(v.config)
+    grown = replace(base, fin_area_scale={"vertical_tail": 2.0})
+    assert float(mass_terms(v.config, 1500.0, grown)[key]) == pytest.approx(
+        2 ** 0.873 * float(mass_terms(v.config, 1500.0, base)[key]), rel=1e-12)

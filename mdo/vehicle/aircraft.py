@@ -95,6 +95,9 @@ from .viscous_wing import viscous_rows, viscous_unknowns, viscous_upwash
 __all__ = ["Aircraft", "DesignBounds"]
 
 
+#: the largest fin a fin-sizing optimization may reach, times the configured fin's area
+FIN_AREA_SCALE_MAX = 3.0
+
 @dataclass
 class DesignBounds:
     """Bounds of the design variables, as factors of the baseline (or absolute where noted).
@@ -177,6 +180,10 @@ class Aircraft(AircraftGeometryMixin, AirframeDragMixin, WingTiltMixin):
         for a tilt-wing.  With ``wing_stall`` as well (a tilt-wing asked for it), the one-pass
         post-stall strips apply at the nodes of segments that are not wing-borne (negative
         ``stall_margin_cl``: the transitions) and the correction at every other node.
+    fin_sizing : each fin's area a design variable (``<fin>.area_scale``, 1 to 3 times its
+        configured area, aspect ratio, taper and sweep held; free with the wing), its rudder's
+        moment (``engine_out``), skin-friction drag and mass (Raymer Eq. 15.48) following it.
+        The configured fin is the floor: directional stability is not modelled.  Default off.
     engine_out : ``"rudder"`` (default for airplanes): at every wing-borne node the fins' rudder
         holds the yaw of each outboard motor's mirror at take-off power with that motor failed
         (:mod:`mdo.vehicle.engine_out`); ``"off"`` (default for a tilt-wing).
@@ -199,10 +206,13 @@ class Aircraft(AircraftGeometryMixin, AirframeDragMixin, WingTiltMixin):
                  wing_stall: bool | None = None, slipstream_breaks: bool = False, wake_samples: int = DEFAULT_STRIP_SAMPLES,
                  wake_core_rel: float = DEFAULT_CORE_REL,
                  pitch: str = "control", tilt: str = "schedule", trim: bool = True, wing_viscous: bool | None = None,
-                 blown_profile_drag: bool = True, engine_out: str | None = None):
+                 blown_profile_drag: bool = True, engine_out: str | None = None, fin_sizing: bool = False):
         self._check_options(config, free, coupling, mass_model, tip_mach_limit, swirl_recovery, wake_samples,
                             stall_margin_cl, max_span_m, pitch, tilt, trim)
         self.engine_out = self._engine_out_option(config, engine_out)
+        # each fin's area a design variable (x1 to x3 of its own, aspect ratio and sweep held): its
+        # rudder's moment, drag and mass follow it; the baseline fin's directional stability is the floor
+        self.fin_sizing = bool(fin_sizing)
         self.config = config
         self.name = config.name
         self.free = set(free)
@@ -336,6 +346,7 @@ class Aircraft(AircraftGeometryMixin, AirframeDragMixin, WingTiltMixin):
             gm.add_design(problem, b, rotor_free="rotor" in self.free, positions_free=self.positions_free,
                           design_point_constraint=dtp, stall_margin_cl=self.stall_margin_cl)
         self.design = {"wings": self._wing_design(problem)}
+        self.fin_area_scale = self._fin_design(problem)
         first = self.groups[0].design
         self.design.update({k: first[k] for k in ("T_design", "V_design", "R", "cl_design", "eta", "P_rated")})
         self.blade = self.groups[0].blade
@@ -372,6 +383,21 @@ class Aircraft(AircraftGeometryMixin, AirframeDragMixin, WingTiltMixin):
                             0.05, f"{w.name} section twists at eta {list(w.section_eta)}", shape=len(tw0))}
         return out
 
+    def _fin_design(self, problem) -> dict:
+        """Each fin's area over its configured area: a design variable with ``fin_sizing``
+        (free with the wing), else 1."""
+        if not self.fin_sizing:
+            return {f.name: 1.0 for f in self.config.fins}
+        free = "wing" in self.free
+        out = {}
+        for f in self.config.fins:
+            out[f.name] = problem.variable(f"{f.name}.area_scale", 1, unit="-", scale=1.0, lower=1.0,
+                                           upper=FIN_AREA_SCALE_MAX if free else 1.0, init=1.0, design=True,
+                                           description=f"{f.name} area / its configured {f.area_m2:g} m^2 "
+                                                       "(aspect ratio held)")
+            problem.output(f"{f.name}.area_m2", f.area_m2 * out[f.name], unit="m^2", summary=True)
+        return out
+
     def _add_mass(self, problem):
         d = self.design
         md = MassDesign({w: v["span"] for w, v in d["wings"].items()},
@@ -380,7 +406,8 @@ class Aircraft(AircraftGeometryMixin, AirframeDragMixin, WingTiltMixin):
                         {gm.name: gm.design["P_rated"] for gm in self.groups},
                         {gm.name: gm.design["omega_rated"] for gm in self.groups},
                         wing_design_lift_N=self._wing_design_lifts(problem),
-                        rotor_span_eta={gm.name: gm.design["eta"] for gm in self.groups})
+                        rotor_span_eta={gm.name: gm.design["eta"] for gm in self.groups},
+                        fin_area_scale=self.fin_area_scale)
         self.mass_design = md
         if self.mass_model == "buildup":
             W0 = self.togw_baseline_kg
@@ -557,6 +584,7 @@ class Aircraft(AircraftGeometryMixin, AirframeDragMixin, WingTiltMixin):
         stopped = {gm.name: _row(1.0 - rot[gm.name]["active"]) for gm in self.groups if rot[gm.name]["off"].size}
         r_blown = self._blown_strips(r, v_axial, v_rest, V, wing_alpha) if self.blown_profile_drag else None
         b = self.drag_buildup(self.vlm, r, rho, mu, V, mach, stopped, r_profile=r_blown,
+                              fin_area_scale=self.fin_area_scale,
                               thrust={gm.name: rot[gm.name]["T"] for gm in self.groups}, heat_W=heat_W,
                               alpha_body=alpha, post_stall_nodes=self.post_stall_nodes(nodes, K))
         pd, L_stall, L_body, D_folded = b["pd"], b["L_stall"], b["L_body"], b["D_folded"]

@@ -26,7 +26,7 @@ class AirframeDragMixin:
     ``nacelles``, ``vlm``, ``lifting_wings``, ``strip_eta`` and ``wing_stall``)."""
 
     def drag_buildup(self, vlm, r, rho, mu, V, mach, stopped=None, thrust=None, heat_W=None,
-                     alpha_body=None, post_stall_nodes=None, r_profile=None) -> dict:
+                     alpha_body=None, post_stall_nodes=None, r_profile=None, fin_area_scale=None) -> dict:
         """Everything but the induced drag and the approach drag device, for a lattice
         solution ``r`` of ``vlm`` (rows 1 x K, numbers or CasADi), each term in N:
 
@@ -37,7 +37,9 @@ class AirframeDragMixin:
         * ``fuselage``: Raymer's component build-up (:func:`~mdo.wing.body_drag`);
         * ``nacelles``: the same, scrubbed by the group's slipstream (:meth:`_nacelle_drag`;
           ``thrust`` {group: thrust per rotor, 1 x K}; freestream without it);
-        * ``fins``: flat-plate skin friction x form factor x wetted area 2.04 S;
+        * ``fins``: flat-plate skin friction x form factor x wetted area 2.04 S (times
+          ``fin_area_scale[fin]`` for a sized fin, its chords by the square root: the guess
+          flies the configured fins);
         * ``folded``: the drag area of each stopped/folded group times ``stopped[group]``;
         * ``leakage``: ``config.drag.leakage_protuberance_fraction`` of the terms above;
         * ``cooling``: the motor and inverter heat ``heat_W`` (1 x K, W) carried off by
@@ -69,12 +71,13 @@ class AirframeDragMixin:
             L_stall, D_stall = on * L_stall, on * D_stall
         D_bodies, _ = body_drag(self.bodies, V, rho, mu, mach)
         D_fin = 0.0
-        for f in self.fins:
-            re = rho * V * f.mean_aerodynamic_chord_m / mu
+        for f in self.fins:   # a sized fin: area x s, chords x sqrt(s) (aspect ratio held)
+            s = (fin_area_scale or {}).get(f.name, 1.0)
+            re = rho * V * f.mean_aerodynamic_chord_m * ca.sqrt(s) / mu
             cf = skin_friction(ca.sqrt(re * re + 1e8), mach)
             ff = form_factor_wing(f.thickness_to_chord, mach=ca.sqrt(mach * mach + 1e-4),
                                   sweep_max_thickness=math.radians(f.sweep_quarter_chord_deg))
-            D_fin = D_fin + q * cf * ff * 2.04 * f.area_m2
+            D_fin = D_fin + q * cf * ff * 2.04 * f.area_m2 * s
         D_folded = 0.0
         for gm in self.groups:
             A = gm.config.folded_drag_area_m2

@@ -91,14 +91,17 @@ def _fin_quarter_mac_x(fin) -> float:
     return fin.root_le_x_m + z_mac * tan_le + 0.25 * fin.mean_aerodynamic_chord_m
 
 
-def fin_yaw_moment_per_q_m3(fins, x_cg):
+def fin_yaw_moment_per_q_m3(fins, x_cg, area_scale: dict | None = None):
     """The fins' largest rudder yawing moment over the freestream dynamic pressure, m^3
-    (the right side of Eq. E1 without ``q``); ``x_cg`` a number or CasADi expression."""
+    (the right side of Eq. E1 without ``q``); ``x_cg`` a number or CasADi expression;
+    ``area_scale[fin]`` a sized fin's area over its configured one (aspect ratio held:
+    the lift slope is the configured fin's; the arm is held too)."""
     total = 0.0
     for f in fins:
+        s = (area_scale or {}).get(f.name, 1.0)
         dCL = (fin_lift_slope_per_rad(f) * rudder_effectiveness(f.rudder_chord_fraction)
                * f.rudder_effectiveness_factor * math.radians(f.rudder_max_deflection_deg))
-        total = total + FIN_DYNAMIC_PRESSURE_RATIO * f.area_m2 * dCL * (_fin_quarter_mac_x(f) - x_cg)
+        total = total + FIN_DYNAMIC_PRESSURE_RATIO * f.area_m2 * s * dCL * (_fin_quarter_mac_x(f) - x_cg)
     return total
 
 
@@ -123,7 +126,7 @@ def engine_out_moments(ac, env) -> tuple:
         x_cg = main.root_le_x_m + 0.25 * main.root_chord_m
     V, rho = env["V"], env["rho"]
     q = 0.5 * rho * V * V
-    N_rudder = fin_yaw_moment_per_q_m3(cfg.fins, x_cg) * q
+    N_rudder = fin_yaw_moment_per_q_m3(cfg.fins, x_cg, getattr(ac, "fin_area_scale", None)) * q
     demand = {}
     for gm in ac.groups:
         g, d = gm.config, gm.design

@@ -68,6 +68,8 @@ class MassDesign:
     # its area's share of the weight) and the rotors' span positions (fractions of the semispan)
     wing_design_lift_N: dict = None
     rotor_span_eta: dict = None
+    # each fin's area over its configured area (Aircraft(fin_sizing=True); aspect ratio held)
+    fin_area_scale: dict = None
 
     @classmethod
     def baseline(cls, cfg: VehicleConfig) -> "MassDesign":
@@ -151,8 +153,9 @@ def mass_terms(cfg: VehicleConfig, togw_kg, design: MassDesign | None = None) ->
     terms = {}      # the regressions, before the calibration
     for w in cfg.horizontal_tails:
         terms[f"horizontal tail: {w.name}"] = _htail_lb(w, nz_w, q) * u.LB
-    for w in cfg.fins:
-        terms[f"vertical tail: {w.name}"] = _vtail_lb(w, nz_w, q) * u.LB
+    for w in cfg.fins:   # Eq. 15.48 goes as S^0.873 at a held aspect ratio
+        s = (d.fin_area_scale or {}).get(w.name, 1.0)
+        terms[f"vertical tail: {w.name}"] = _vtail_lb(w, nz_w, q) * s ** 0.873 * u.LB
     f = cfg.fuselage
     S_f = f.wetted_area_m2 / u.FT ** 2
     fineness = f.length_m / np.sqrt(f.width_m * f.height_m)

@@ -56,6 +56,8 @@ def _design_numbers(vehicle, solution) -> dict:
         if name in getattr(vehicle, "wing_design_lift", {}):
             out["wings"][name]["design_lift_N"] = float(_val(solution, vehicle.wing_design_lift[name]))
     out["rotor_centers_m"] = [[float(_val(solution, c)) for c in p] for p in vehicle.rotor_positions]
+    out["fins"] = {f.name: {"area_m2": f.area_m2 * float(_val(solution, vehicle.fin_area_scale[f.name]))}
+                   for f in vehicle.config.fins}
     out["togw_kg"] = float(_val(solution, vehicle.togw))
     out["battery_mass_kg"] = float(vehicle.config.battery.mass_kg)
     out["rotor_groups"] = {}
@@ -283,7 +285,9 @@ def add_vehicle_reports(problem, vehicle, mission, figures: bool = True):
                         {n: g["motor_rated_rpm"] * 2 * math.pi / 60 for n, g in rg.items()},
                         wing_design_lift_N={n: w["design_lift_N"] for n, w in design["wings"].items()
                                             if "design_lift_N" in w},
-                        rotor_span_eta={n: g["span_eta"] for n, g in rg.items()})
+                        rotor_span_eta={n: g["span_eta"] for n, g in rg.items()},
+                        fin_area_scale={f.name: design["fins"][f.name]["area_m2"] / f.area_m2
+                                        for f in vehicle.config.fins})
         (out / "mass.md").write_text(mass_table_markdown(vehicle.config, md))
         (out / "design.json").write_text(json.dumps(design, indent=1))
         (out / "energy.md").write_text(energy_breakdown(vehicle, mission, solution))
