@@ -107,6 +107,10 @@ def test_an_outboard_motor_beyond_the_rudder_violates_the_limit_at_the_slow_node
 def test_engine_out_default_and_its_errors():
     p, *_ = _problem(ga2p(), engine_out="off")
     assert "propellers engine-out yaw" not in p.groups
+    # the analysis of a frozen design reports the two moments and does not enforce them
+    p, _, m = _problem(ga2p(), design_point_constraints=False)
+    assert "propellers engine-out yaw" not in p.groups
+    assert {"rudder_yaw_moment_Nm", "propellers.engine_out_yaw_moment_Nm"} <= set(m.evaluation.outputs)
     assert Aircraft(ttw(), **SMALL).engine_out == "off"     # a tilt-wing: its rotors hold the yaw
     assert Aircraft(ga2p(), **SMALL).engine_out == "rudder"
     no_fin = replace(ga2p(), wings=tuple(w for w in ga2p().wings if w.role != "fin"))

@@ -186,7 +186,9 @@ class Aircraft(AircraftGeometryMixin, AirframeDragMixin, WingTiltMixin):
         The configured fin is the floor: directional stability is not modelled.  Default off.
     engine_out : ``"rudder"`` (default for airplanes): at every wing-borne node the fins' rudder
         holds the yaw of each outboard motor's mirror at take-off power with that motor failed
-        (:mod:`mdo.vehicle.engine_out`); ``"off"`` (default for a tilt-wing).
+        (:mod:`mdo.vehicle.engine_out`); ``"off"`` (default for a tilt-wing).  A property of the
+        design: with ``design_point_constraints=False`` (the analysis of a frozen design) it is
+        reported in ``mission.csv``, not enforced (a baseline beyond the rudder still flies).
     blown_profile_drag : the strips' profile drag at the dynamic pressure of the whole wake at
         their control points (the slipstream's axial part included: a blown strip is scrubbed at
         the slipstream's speed); on by default.  Off, the strips read the lattice's local velocity,

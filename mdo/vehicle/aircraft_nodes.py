@@ -77,7 +77,10 @@ def operating_limits(ac, nodes, rot, po, aero, env) -> list:
     if expr is not None:
         out.append(ResidualGroup("stall margin", expr, kind="<=", scale=0.1, unit="-", row_labels=labels,
                                  columns=cols))
-    if ac.engine_out == "rudder":   # the wing-borne nodes: where the rudder and not the rotors fly it
+    # the wing-borne nodes: where the rudder and not the rotors fly it.  A property of the design, as
+    # the design-point tip Mach: the analysis of a frozen design reports it (mission.csv's
+    # rudder_yaw_moment_Nm and <group>.engine_out_yaw_moment_Nm) and flies the mission as defined
+    if ac.engine_out == "rudder" and ac.design_point_constraints:
         out += engine_out_rows(ac, nodes, rot, env, _stall_margin(ac, nodes, K) >= 0.0)
     return out
 
