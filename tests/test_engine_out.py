@@ -15,7 +15,7 @@ from mdo.nlp import Problem
 from mdo.vehicle.aircraft import Aircraft
 from mdo.vehicle.catalog import ga2p, ga8p, ttw
 from mdo.vehicle.engine_out import (fin_lift_slope_per_rad, fin_yaw_moment_per_q_m3, ideal_thrust_N,
-                                    rudder_effectiveness)
+                                    minimum_control_speed_mps, rudder_effectiveness)
 
 SMALL = dict(n_stations=8, wing_strips=10, tail_strips=3)
 
@@ -66,6 +66,7 @@ def test_the_p2006t_rudder_holds_its_own_engines_near_its_published_vmc():
               for V in speeds]
     v_mc = float(speeds[np.argmax(np.asarray(excess) < 0)])
     assert v_mc == pytest.approx(62 * u.KNOT, rel=0.2)
+    assert minimum_control_speed_mps(Nq, 1.31, 73.5e3, 0.89) == pytest.approx(v_mc, abs=0.06)
 
 
 def _problem(cfg, **kw):

@@ -53,7 +53,7 @@ import numpy as np
 from .base import ResidualGroup
 
 __all__ = ["fin_lift_slope_per_rad", "rudder_effectiveness", "fin_yaw_moment_per_q_m3",
-           "ideal_thrust_N", "engine_out_moments", "engine_out_rows", "ENGINE_OUT_IDEAL_FRACTION", "FIN_EFFECTIVE_AR_FACTOR",
+           "ideal_thrust_N", "minimum_control_speed_mps", "engine_out_moments", "engine_out_rows", "ENGINE_OUT_IDEAL_FRACTION", "FIN_EFFECTIVE_AR_FACTOR",
            "FIN_DYNAMIC_PRESSURE_RATIO"]
 
 ENGINE_OUT_IDEAL_FRACTION = 0.85     # propeller thrust / ideal actuator-disk thrust at equal power
@@ -113,6 +113,30 @@ def ideal_thrust_N(power_W, V, rho, disk_area_m2, passes: int = 8):
         v_i = -0.5 * V + ca.sqrt(0.25 * V * V + T / (2 * rho * disk_area_m2))
         T = power_W / (V + v_i)
     return T
+
+
+def minimum_control_speed_mps(yaw_per_q_m3: float, arm_m: float, take_off_power_W: float, radius_m: float,
+                              inoperative_drag_coefficient: float = 0.0, rho: float = 1.225) -> float:
+    """The speed (m/s, at density ``rho``) above which the rudder holds a failed motor at
+    ``arm_m`` with its mirror at ``take_off_power_W`` (Eq. E1 with equality): the design's
+    V_MC in this model.  Numbers; bisection (the demand falls with speed, the rudder's moment
+    grows as q).  0 if it holds at any speed above 1 m/s, inf if at none below 300 m/s."""
+    area = math.pi * radius_m ** 2
+
+    def excess(V):
+        q = 0.5 * rho * V * V
+        T = ENGINE_OUT_IDEAL_FRACTION * float(ideal_thrust_N(take_off_power_W, V, rho, area))
+        return arm_m * (T + q * inoperative_drag_coefficient * area) - yaw_per_q_m3 * q
+
+    lo, hi = 1.0, 300.0
+    if excess(lo) <= 0.0:
+        return 0.0
+    if excess(hi) > 0.0:
+        return math.inf
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if excess(mid) > 0.0 else (lo, mid)
+    return 0.5 * (lo + hi)
 
 
 def engine_out_moments(ac, env) -> tuple:

@@ -58,6 +58,7 @@ def _design_numbers(vehicle, solution) -> dict:
     out["rotor_centers_m"] = [[float(_val(solution, c)) for c in p] for p in vehicle.rotor_positions]
     out["fins"] = {f.name: {"area_m2": f.area_m2 * float(_val(solution, vehicle.fin_area_scale[f.name]))}
                    for f in vehicle.config.fins}
+    out["engine_out"] = _engine_out_numbers(vehicle, solution, out)
     out["togw_kg"] = float(_val(solution, vehicle.togw))
     out["battery_mass_kg"] = float(vehicle.config.battery.mass_kg)
     out["rotor_groups"] = {}
@@ -71,6 +72,34 @@ def _design_numbers(vehicle, solution) -> dict:
             "design_cl": float(_val(solution, gd["cl_design"])),
             "motor_rated_power_W": float(_val(solution, gd["P_rated"])),
             "motor_rated_rpm": float(_val(solution, gd["omega_rated"])) * 60 / (2 * math.pi)}
+    return out
+
+
+def _engine_out_numbers(vehicle, solution, design: dict) -> dict:
+    """The rudder's moment per unit q and, per rotor group, its outermost arm and the design's
+    minimum control speed at sea level with that motor failed and its mirror at take-off power
+    (``mdo.vehicle.engine_out``; whether or not the limit is enforced)."""
+    from .engine_out import fin_yaw_moment_per_q_m3, minimum_control_speed_mps
+    cfg = vehicle.config
+    if not cfg.fins:
+        return {}
+    x_cg = getattr(vehicle, "x_cg", None)
+    x_cg = (cfg.main_wing.root_le_x_m + 0.25 * cfg.main_wing.root_chord_m if x_cg is None
+            else float(_val(solution, x_cg)))
+    scale = {f.name: design["fins"][f.name]["area_m2"] / f.area_m2 for f in cfg.fins}
+    Nq = float(fin_yaw_moment_per_q_m3(cfg.fins, x_cg, scale))
+    out = {"mode": vehicle.engine_out, "rudder_yaw_moment_per_q_m3": Nq, "groups": {}}
+    for gm in vehicle.groups:
+        g = gm.config
+        arm = max(abs(float(_val(solution, p[1]))) for p in vehicle.rotor_centres[g.name])
+        P_to = float(_val(solution, gm.design["P_rated"])) * (
+            g.motor.short_time_power_factor if g.motor.short_time_segments else 1.0)
+        v_mc = minimum_control_speed_mps(Nq, arm, P_to, float(_val(solution, gm.design["R"])),
+                                         g.inoperative_drag_coefficient)
+        finite = math.isfinite(v_mc)   # (inf: beyond the rudder at any speed; JSON has no inf)
+        out["groups"][g.name] = {"arm_m": arm, "take_off_power_W": P_to, "failure_stops_mirror": g.failure_stops_mirror,
+                                 "minimum_control_speed_sea_level_mps": v_mc if finite else None,
+                                 "minimum_control_speed_sea_level_kn": v_mc / u.KNOT if finite else None}
     return out
 
 
