@@ -1,4 +1,5 @@
 """Full problems of the paper (slow: minutes each; `python -m pytest -m slow`)."""
+import csv
 import json
 import subprocess
 import sys
@@ -38,3 +39,10 @@ def test_baseline_analysis_and_optimization(tmp_path, problem):
     assert s["status"] == "Solve_Succeeded"
     reduction = 100 * (s_an["battery_energy_kWh"] - s["battery_energy_kWh"]) / s_an["battery_energy_kWh"]
     assert reduction >= PAPER_REDUCTION[problem]
+    if problem != "ttw":   # an airplane's optimum is controllable with a motor out at every speed it flies
+        eo = json.loads((op / "design.json").read_text())["engine_out"]
+        with open(op / "mission.csv") as fh:
+            v_min = min(float(r["speed_mps"]) for r in csv.DictReader(fh))
+        for name, g in eo["groups"].items():
+            # V_MC at sea level, where the rudder is strongest: at most the slowest node's speed
+            assert g["minimum_control_speed_sea_level_mps"] <= v_min * (1 + 1e-3), name
