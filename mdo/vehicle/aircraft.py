@@ -88,15 +88,13 @@ from .aircraft_nodes import _num, _row, node_outputs, operating_limits, wing_des
 from .balance import add_balance, trim_residuals, trim_unknowns, trim_upwash
 from .base import G0, NodeEvaluation, Output, ResidualGroup, State, Unknown
 from .config import VehicleConfig, WingConfig
+from .engine_out import add_fin_design, engine_out_option
 from .mass import MassDesign, solve_togw, total_mass
 from .rotor_group import RotorGroupModel
 from .viscous_wing import viscous_rows, viscous_unknowns, viscous_upwash
 
 __all__ = ["Aircraft", "DesignBounds"]
 
-
-#: the largest fin a fin-sizing optimization may reach, times the configured fin's area
-FIN_AREA_SCALE_MAX = 3.0
 
 @dataclass
 class DesignBounds:
@@ -211,7 +209,7 @@ class Aircraft(AircraftGeometryMixin, AirframeDragMixin, WingTiltMixin):
                  blown_profile_drag: bool = True, engine_out: str | None = None, fin_sizing: bool = False):
         self._check_options(config, free, coupling, mass_model, tip_mach_limit, swirl_recovery, wake_samples,
                             stall_margin_cl, max_span_m, pitch, tilt, trim)
-        self.engine_out = self._engine_out_option(config, engine_out)
+        self.engine_out = engine_out_option(config, engine_out)
         # each fin's area a design variable (x1 to x3 of its own, aspect ratio and sweep held): its
         # rudder's moment, drag and mass follow it; the baseline fin's directional stability is the floor
         self.fin_sizing = bool(fin_sizing)
@@ -295,20 +293,6 @@ class Aircraft(AircraftGeometryMixin, AirframeDragMixin, WingTiltMixin):
         if tilt == "control" and not any(w.tilting for w in config.wings):
             raise InputError("tilt", "'control' needs a wing with tilting=True (a tilt-wing)")
 
-    @staticmethod
-    def _engine_out_option(config, engine_out):
-        """``engine_out``: None is "rudder" for an airplane, "off" for a tilt-wing (its rotor
-        failure is a hover and transition case of the remaining rotors, not modelled)."""
-        if engine_out is None:
-            engine_out = "rudder" if config.kind == "airplane" else "off"
-        if engine_out not in ("rudder", "off"):
-            raise InputError("engine_out", f"one of 'rudder', 'off', got {engine_out!r}")
-        held = [g for g in config.rotor_groups if not g.failure_stops_mirror]
-        if engine_out == "rudder" and held and not config.fins:
-            raise InputError("engine_out", "'rudder' needs a fin (a wing with role 'fin') to hold the yaw of a "
-                             "failed motor; add one or set engine_out='off' and say how the yaw is held")
-        return engine_out
-
     # ------------------------------------------------------------------ compatibility views
     @property
     def group(self):
@@ -348,7 +332,7 @@ class Aircraft(AircraftGeometryMixin, AirframeDragMixin, WingTiltMixin):
             gm.add_design(problem, b, rotor_free="rotor" in self.free, positions_free=self.positions_free,
                           design_point_constraint=dtp, stall_margin_cl=self.stall_margin_cl)
         self.design = {"wings": self._wing_design(problem)}
-        self.fin_area_scale = self._fin_design(problem)
+        self.fin_area_scale = add_fin_design(self, problem)
         first = self.groups[0].design
         self.design.update({k: first[k] for k in ("T_design", "V_design", "R", "cl_design", "eta", "P_rated")})
         self.blade = self.groups[0].blade
@@ -383,21 +367,6 @@ class Aircraft(AircraftGeometryMixin, AirframeDragMixin, WingTiltMixin):
                 "taper": dv(f"{w.name}.taper", w.taper, b.taper[0], b.taper[1], "-", 1.0, f"{w.name} taper ratio"),
                 "twist": dv(f"{w.name}.twist", tw0, np.radians(b.twist_deg[0]), np.radians(b.twist_deg[1]), "rad",
                             0.05, f"{w.name} section twists at eta {list(w.section_eta)}", shape=len(tw0))}
-        return out
-
-    def _fin_design(self, problem) -> dict:
-        """Each fin's area over its configured area: a design variable with ``fin_sizing``
-        (free with the wing), else 1."""
-        if not self.fin_sizing:
-            return {f.name: 1.0 for f in self.config.fins}
-        free = "wing" in self.free
-        out = {}
-        for f in self.config.fins:
-            out[f.name] = problem.variable(f"{f.name}.area_scale", 1, unit="-", scale=1.0, lower=1.0,
-                                           upper=FIN_AREA_SCALE_MAX if free else 1.0, init=1.0, design=True,
-                                           description=f"{f.name} area / its configured {f.area_m2:g} m^2 "
-                                                       "(aspect ratio held)")
-            problem.output(f"{f.name}.area_m2", f.area_m2 * out[f.name], unit="m^2", summary=True)
         return out
 
     def _add_mass(self, problem):

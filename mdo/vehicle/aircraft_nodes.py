@@ -14,7 +14,7 @@ import numpy as np
 from ..core import units as u
 from .balance import surface_lift_N
 from .base import G0, Output, ResidualGroup
-from .engine_out import engine_out_moments, engine_out_rows
+from .engine_out import engine_out_moments_once, engine_out_rows
 from .stall import stall_margin_rows
 
 __all__ = ["operating_limits", "node_outputs", "wing_design_lift_rows"]
@@ -168,7 +168,7 @@ def node_outputs(ac, nodes, rot, aero, po, env) -> dict:
         out[f"{w.name}.lift_N"] = Output(surface_lift_N(ac.vlm, r, names.index(w.name), env["rho"], V), "N",
                                          f"{w.name}: lift of the surface (negative: a download)")
     if ac.fins:   # the engine-out limit's two sides (mdo.vehicle.engine_out), at every node
-        N_rudder, demand = engine_out_moments(ac, env)
+        N_rudder, demand = engine_out_moments_once(ac, env)
         out["rudder_yaw_moment_Nm"] = Output(N_rudder, "N m", "the fins' largest rudder yawing moment")
         for gm in ac.groups:
             worst = demand[gm.name][0]

@@ -13,6 +13,12 @@ assembly turns them into symbolic expressions.  Conventions:
 * wing sections are given at semispan fractions with twist and chord as a
   fraction of the root chord (Fig. 12): at fixed reference area a change of span
   or taper rescales the whole planform.
+
+The records, in file order: ``WingConfig`` (a lifting surface, tail or fin; a fin's
+rudder), ``MotorConfig`` (rating, short-time/take-off factor, losses), ``RotorGroupConfig``
+(rotors, their motor, nacelles, what a failed motor does), ``FuselageConfig``,
+``BatteryConfig``, ``AirframeDragConfig`` and ``VehicleConfig`` (the whole aircraft and its
+consistency checks: roles, references, disk overlaps).
 """
 from __future__ import annotations
 
@@ -201,6 +207,12 @@ class MotorConfig:
         check_range("motor.peak_efficiency", self.peak_efficiency, 0.80, 0.995)
         check_range("motor.peak_load_fraction", self.peak_load_fraction, 0.1, 1.0)
         check_range("motor.inverter_peak_efficiency", self.inverter_peak_efficiency, 0.90, 0.999)
+
+    @property
+    def take_off_power_factor(self) -> float:
+        """The motor's take-off power over its continuous rating: the short-time factor when
+        a short-time rating is set (``short_time_segments``), else 1."""
+        return self.short_time_power_factor if self.short_time_segments else 1.0
 
     def drive(self, name: str, count: int, rated_power_W, rated_speed_radps, pack):
         """The group's motors as a :class:`mdo.powertrain.MotorGroup` sized at this rating

@@ -50,10 +50,13 @@ import math
 import casadi as ca
 import numpy as np
 
+from ..core.errors import InputError
 from .base import ResidualGroup
 
 __all__ = ["fin_lift_slope_per_rad", "rudder_effectiveness", "fin_yaw_moment_per_q_m3",
-           "ideal_thrust_N", "minimum_control_speed_mps", "engine_out_moments", "engine_out_rows", "ENGINE_OUT_IDEAL_FRACTION", "FIN_EFFECTIVE_AR_FACTOR",
+           "ideal_thrust_N", "minimum_control_speed_mps", "engine_out_moments", "engine_out_moments_once",
+           "engine_out_rows",
+           "engine_out_option", "add_fin_design", "default_x_cg_m", "FIN_AREA_SCALE_MAX", "ENGINE_OUT_IDEAL_FRACTION", "FIN_EFFECTIVE_AR_FACTOR",
            "FIN_DYNAMIC_PRESSURE_RATIO"]
 
 ENGINE_OUT_IDEAL_FRACTION = 0.85     # propeller thrust / ideal actuator-disk thrust at equal power
@@ -145,9 +148,7 @@ def engine_out_moments(ac, env) -> tuple:
     ``(N_rudder, {group: [demand of position i]})``."""
     cfg = ac.config
     x_cg = getattr(ac, "x_cg", None)
-    if x_cg is None:   # no trim: the main wing's quarter MAC (unswept quarter chord)
-        main = cfg.main_wing
-        x_cg = main.root_le_x_m + 0.25 * main.root_chord_m
+    x_cg = default_x_cg_m(cfg) if x_cg is None else x_cg
     V, rho = env["V"], env["rho"]
     q = 0.5 * rho * V * V
     N_rudder = fin_yaw_moment_per_q_m3(cfg.fins, x_cg, getattr(ac, "fin_area_scale", None)) * q
@@ -155,7 +156,7 @@ def engine_out_moments(ac, env) -> tuple:
     for gm in ac.groups:
         g, d = gm.config, gm.design
         area = math.pi * d["R"] ** 2
-        P_to = d["P_rated"] * (g.motor.short_time_power_factor if g.motor.short_time_segments else 1.0)
+        P_to = d["P_rated"] * g.motor.take_off_power_factor
         T_to = ENGINE_OUT_IDEAL_FRACTION * ideal_thrust_N(P_to, V, rho, area)
         D_dead = q * g.inoperative_drag_coefficient * area
         # the arm of each position: the starboard rotor's y
@@ -163,11 +164,20 @@ def engine_out_moments(ac, env) -> tuple:
     return N_rudder, demand
 
 
+def engine_out_moments_once(ac, env) -> tuple:
+    """:func:`engine_out_moments`, built once per evaluation and kept in ``env``: the limit
+    and the ``mission.csv`` outputs read the same expressions."""
+    if "engine_out" not in env:
+        env["engine_out"] = engine_out_moments(ac, env)
+    return env["engine_out"]
+
+
 def engine_out_rows(ac, nodes, rot, env, wing_borne: np.ndarray) -> list:
     """Eq. E1 as one ``ResidualGroup`` per rotor group (a row per rotor position), at the
     wing-borne nodes where the group runs.  Scaled by the rudder's moment at the baseline
-    cruise speed."""
-    N_rudder, demand = engine_out_moments(ac, env)
+    cruise speed.  The moments are built once per evaluation (``env["engine_out"]``, which
+    the ``mission.csv`` outputs read too)."""
+    N_rudder, demand = engine_out_moments_once(ac, env)
     scale = _reference_moment(ac.config)
     out = []
     for gm in ac.groups:
@@ -188,6 +198,46 @@ def _reference_moment(cfg) -> float:
     """The rudder's moment at the baseline cruise speed and altitude, N m (a scale)."""
     from ..core.atmosphere import atmosphere
     rho = float(np.asarray(atmosphere(np.array([cfg.cruise_altitude_m]))["density_kgpm3"]).ravel()[0])
+    return float(fin_yaw_moment_per_q_m3(cfg.fins, default_x_cg_m(cfg))) * 0.5 * rho * cfg.cruise_speed_mps ** 2
+
+
+def default_x_cg_m(cfg) -> float:
+    """The CG's x when the vehicle does not place it (no pitch trim): the main wing's root
+    quarter chord (its quarter chord is unswept)."""
     main = cfg.main_wing
-    x_ref = main.root_le_x_m + 0.25 * main.root_chord_m
-    return float(fin_yaw_moment_per_q_m3(cfg.fins, x_ref)) * 0.5 * rho * cfg.cruise_speed_mps ** 2
+    return main.root_le_x_m + 0.25 * main.root_chord_m
+
+
+#: the largest fin a fin-sizing optimization may reach, times the configured fin's area
+FIN_AREA_SCALE_MAX = 3.0
+
+
+def engine_out_option(config, engine_out) -> str:
+    """``Aircraft(engine_out=...)`` checked: None is "rudder" for an airplane, "off" for a
+    tilt-wing (its rotor failure is a hover and transition case of the remaining rotors,
+    not modelled); "rudder" needs a fin unless every group's failure stops its mirror."""
+    if engine_out is None:
+        engine_out = "rudder" if config.kind == "airplane" else "off"
+    if engine_out not in ("rudder", "off"):
+        raise InputError("engine_out", f"one of 'rudder', 'off', got {engine_out!r}")
+    held = [g for g in config.rotor_groups if not g.failure_stops_mirror]
+    if engine_out == "rudder" and held and not config.fins:
+        raise InputError("engine_out", "'rudder' needs a fin (a wing with role 'fin') to hold the yaw of a "
+                         "failed motor; add one or set engine_out='off' and say how the yaw is held")
+    return engine_out
+
+
+def add_fin_design(ac, problem) -> dict:
+    """Each fin's area over its configured area: a design variable with ``ac.fin_sizing``
+    (free with the wing, 1 to ``FIN_AREA_SCALE_MAX``), else 1."""
+    if not ac.fin_sizing:
+        return {f.name: 1.0 for f in ac.config.fins}
+    free = "wing" in ac.free
+    out = {}
+    for f in ac.config.fins:
+        out[f.name] = problem.variable(f"{f.name}.area_scale", 1, unit="-", scale=1.0, lower=1.0,
+                                       upper=FIN_AREA_SCALE_MAX if free else 1.0, init=1.0, design=True,
+                                       description=f"{f.name} area / its configured {f.area_m2:g} m^2 "
+                                                   "(aspect ratio held)")
+        problem.output(f"{f.name}.area_m2", f.area_m2 * out[f.name], unit="m^2", summary=True)
+    return out

@@ -79,21 +79,19 @@ def _engine_out_numbers(vehicle, solution, design: dict) -> dict:
     """The rudder's moment per unit q and, per rotor group, its outermost arm and the design's
     minimum control speed at sea level with that motor failed and its mirror at take-off power
     (``mdo.vehicle.engine_out``; whether or not the limit is enforced)."""
-    from .engine_out import fin_yaw_moment_per_q_m3, minimum_control_speed_mps
+    from .engine_out import default_x_cg_m, fin_yaw_moment_per_q_m3, minimum_control_speed_mps
     cfg = vehicle.config
     if not cfg.fins:
         return {}
     x_cg = getattr(vehicle, "x_cg", None)
-    x_cg = (cfg.main_wing.root_le_x_m + 0.25 * cfg.main_wing.root_chord_m if x_cg is None
-            else float(_val(solution, x_cg)))
+    x_cg = default_x_cg_m(cfg) if x_cg is None else float(_val(solution, x_cg))
     scale = {f.name: design["fins"][f.name]["area_m2"] / f.area_m2 for f in cfg.fins}
     Nq = float(fin_yaw_moment_per_q_m3(cfg.fins, x_cg, scale))
     out = {"mode": vehicle.engine_out, "rudder_yaw_moment_per_q_m3": Nq, "groups": {}}
     for gm in vehicle.groups:
         g = gm.config
         arm = max(abs(float(_val(solution, p[1]))) for p in vehicle.rotor_centres[g.name])
-        P_to = float(_val(solution, gm.design["P_rated"])) * (
-            g.motor.short_time_power_factor if g.motor.short_time_segments else 1.0)
+        P_to = float(_val(solution, gm.design["P_rated"])) * g.motor.take_off_power_factor
         v_mc = minimum_control_speed_mps(Nq, arm, P_to, float(_val(solution, gm.design["R"])),
                                          g.inoperative_drag_coefficient)
         finite = math.isfinite(v_mc)   # (inf: beyond the rudder at any speed; JSON has no inf)
