@@ -126,3 +126,17 @@ def test_p2006t_cd0_and_cruise_speed_in_class():
     assert 0.019 <= op["CD0"] <= 0.030
     assert op["V"] / (1852 / 3600) == pytest.approx(140.0, rel=0.10)
     assert 0.78 <= op["eta_p"] <= 0.82
+
+
+def test_p2006t_against_the_flight_manual_tables():
+    """The build-up against the P2006T AFM's cruise and climb tables (issue 17 item 1): every
+    cruise-table point within 10 % in speed (power % read of the 69 kW continuous rating), the
+    sea-level best rate of climb within 10 % at every tabulated mass."""
+    mod = _p2006t_module()
+    bu = mod.build_p2006t()
+    cruise = mod.afm_cruise_checks(bu)
+    assert len(cruise) == len(mod.AFM_CRUISE) == 18
+    assert max(abs(r[4]) for r in cruise) <= 0.10
+    sea_level = [r for r in mod.afm_climb_checks(bu) if r[1] == 0]
+    assert len(sea_level) == 3
+    assert max(abs(r[5]) for r in sea_level) <= 0.10
