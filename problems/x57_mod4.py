@@ -30,13 +30,17 @@ Options (``-o KEY=VALUE``): ``nodes`` (6), ``cruise_distance_nmi`` (12.5, the si
 ``reserve_cruise_distance_nmi`` (5), ``cruise_altitude_ft`` (8000), ``cruise_speed_mph``
 (172), ``cells_parallel`` (40), ``coupling`` ("local"), ``wing_strips`` (20), ``n_stations`` (12),
 ``wake_core_rel`` (0.1), ``engine_out`` ("rudder": the P2006T fin's rudder holds the yaw of a failed
-wing-tip cruise motor's mirror at take-off power, or of a high-lift motor's where they run; "off").
+wing-tip cruise motor's mirror at take-off power, or of a high-lift motor's where they run; "off"),
+``leakage_fraction`` (the airframe's leakage & protuberance allowance, ``AirframeDragConfig``; 0.35 is what the
+P2006T flight manual implies, ``results/validation/p2006t_drag.md``).
 """
+from dataclasses import replace
+
 from mdo.core.units import FT, INCH, KNOT, MPH, NMI
 from mdo.mission import Mission
 from mdo.mission.profiles import ga_segments
 from mdo.nlp import Problem
-from mdo.studies import AIRCRAFT_OPTIONS, minimize_battery_energy
+from mdo.studies import AIRCRAFT_OPTIONS, AIRFRAME_OPTIONS, minimize_battery_energy
 from mdo.wake import DEFAULT_CORE_REL
 from mdo.vehicle.aircraft import Aircraft
 from mdo.vehicle.catalog import GA_CG_Z_M, GA_STABILATOR_RANGE_DEG
@@ -108,6 +112,7 @@ OPTIONS = {
     "wake_core_rel": AIRCRAFT_OPTIONS["wake_core_rel"],
     "engine_out": AIRCRAFT_OPTIONS["engine_out"],
     "fin_sizing": AIRCRAFT_OPTIONS["fin_sizing"],
+    "leakage_fraction": AIRFRAME_OPTIONS["leakage_fraction"],
 }
 
 
@@ -116,9 +121,12 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 1
           cruise_speed_mph: float = 172.0, cells_parallel: int = 40, coupling: str = "local",
           wing_strips: int = 20, n_stations: int = 12, approach_speed_kn: float = APPROACH_SPEED_MPS / KNOT,
           trim: bool = True, wing_viscous: bool | None = None,
-          blown_profile_drag: bool = True, engine_out: str | None = None, fin_sizing: bool = False, wake_core_rel: float = DEFAULT_CORE_REL):
+          blown_profile_drag: bool = True, engine_out: str | None = None, fin_sizing: bool = False, wake_core_rel: float = DEFAULT_CORE_REL,
+          leakage_fraction: float | None = None):
     p = Problem("x57_mod4", "X-57 Maxwell Mod IV whole-mission optimization (two rotor groups)")
     cfg = x57_mod4(cells_parallel, cruise_speed_mph * MPH, cruise_altitude_ft * FT)
+    if leakage_fraction is not None:
+        cfg = replace(cfg, drag=replace(cfg.drag, leakage_protuberance_fraction=float(leakage_fraction)))
     vehicle = Aircraft(cfg, trim=trim, wing_viscous=wing_viscous, blown_profile_drag=blown_profile_drag, free=("rotor", "wing"), n_stations=n_stations, wing_strips=wing_strips,
                        coupling=coupling, design_point_constraints=not analysis, wake_core_rel=wake_core_rel, engine_out=engine_out, fin_sizing=fin_sizing)
     folded = {s: {"highlift.active": 0.0} for s in ("CL", "CR", "D", "DL", "RCL", "RCR", "RD")}
