@@ -50,7 +50,7 @@ def test_the_drag_terms_add_up_and_each_follows_its_law(climb_cruise):
     total = sum(row(f"drag_{t}_N") for t in terms) + row("drag_device_drag_N")
     assert np.allclose(total, row("parasite_drag_N"), rtol=1e-9)
     components = sum(row(f"drag_{t}_N") for t in terms[:5])
-    assert np.allclose(row("drag_leakage_N"), 0.10 * components, rtol=1e-9)
+    assert np.allclose(row("drag_leakage_N"), v.config.drag.leakage_protuberance_fraction * components, rtol=1e-9)
     # cooling: zeta V (bus power - shaft power) / (cp dT), the heat from the powertrain's own outputs
     V = np.asarray(sol.value(m.cond.speed_mps), float).ravel()
     heat = row("propellers.shaft_power_W") * (1 / row("propellers.drive_efficiency") - 1)
@@ -132,7 +132,7 @@ def test_the_flying_aircraft_agrees_with_the_standalone_build_up(climb_cruise):
                             wetted_area_m2=fus.wetted_area_m2),
               BodyComponent("nacelles", 3 * math.sqrt(4.5 / (3 * math.pi)), math.sqrt(4.5 / (3 * math.pi)),
                             "nacelle", 1.5, count=2, wetted_area_m2=4.5)]
-    bu = DragBuildup(main.area_m2, tuple(comps))
+    bu = DragBuildup(main.area_m2, tuple(comps), excrescence_fraction=v.config.drag.leakage_protuberance_fraction)
     k = len(m.labels) - 2
     V = float(np.asarray(sol.value(m.cond.speed_mps), float).ravel()[k])
     h = float(np.asarray(sol.value(m.cond.altitude_m), float).ravel()[k])

@@ -140,3 +140,16 @@ def test_p2006t_against_the_flight_manual_tables():
     sea_level = [r for r in mod.afm_climb_checks(bu) if r[1] == 0]
     assert len(sea_level) == 3
     assert max(abs(r[5]) for r in sea_level) <= 0.10
+
+
+def test_the_catalogs_p2006t_drag_calibration_is_the_flight_manuals():
+    """GA-2P and GA-8P fly the P2006T airframe with ``P2006T_LEAKAGE_FRACTION``: it must stay the
+    allowance at which the build-up's mean cruise-speed error against the AFM tables is zero
+    (within 0.02), and with it every cruise-table point within 3 %."""
+    from mdo.vehicle.catalog import P2006T_LEAKAGE_FRACTION, ga2p, ga8p
+    mod = _p2006t_module()
+    bu = mod.build_p2006t()
+    assert mod.afm_leakage_fraction(bu) == pytest.approx(P2006T_LEAKAGE_FRACTION, abs=0.02)
+    assert max(abs(r[4]) for r in mod.afm_cruise_checks(mod.calibrated_p2006t(bu))) <= 0.03
+    for cfg in (ga2p(), ga8p()):
+        assert cfg.drag.leakage_protuberance_fraction == P2006T_LEAKAGE_FRACTION

@@ -33,9 +33,10 @@ import numpy as np
 
 from ..core import units as u
 from ..core.atmosphere import speed_of_sound
-from .config import BatteryConfig, FuselageConfig, MotorConfig, RotorGroupConfig, VehicleConfig, WingConfig
+from .config import (AirframeDragConfig, BatteryConfig, FuselageConfig, MotorConfig, RotorGroupConfig, VehicleConfig,
+                     WingConfig)
 
-__all__ = ["ga2p", "ga8p", "ttw", "VEHICLES", "design_rpm_for_tip_mach", "GA_APPROACH_DRAG_AREA_M2", "GA_FLAP_SPAN_ETA",
+__all__ = ["ga2p", "ga8p", "ttw", "VEHICLES", "P2006T_LEAKAGE_FRACTION", "P2006T_DRAG", "design_rpm_for_tip_mach", "GA_APPROACH_DRAG_AREA_M2", "GA_FLAP_SPAN_ETA",
            "GA_FLAP_CLMAX_INCREMENT"]
 
 GA_SECTIONS = (0.0, 0.25, 0.5, 0.75, 1.0)
@@ -75,6 +76,20 @@ TTW_AIRFRAME_CALIBRATION = 0.70
 # open, +6.52 ft^2 with 20 deg of flap as well.  The P2006T/X-57 airframe has a
 # retractable gear of the same class; 0.40 m^2 is ΔCD 0.027 on the X-57's 14.76 m^2.
 GA_APPROACH_DRAG_AREA_M2 = 0.40
+
+# The P2006T airframe's drag beyond its modelled components: a calibration to its flight manual,
+# stated as such.  With Raymer's 10 % leakage & protuberance allowance (sec. 12.5.9) the build-up
+# flies every point of the P2006T AFM's cruise tables (18 points, 0-9000 ft, 37-97 % power) 6-9 %
+# too fast, all on the same side: the CD0 the manual implies is 0.0262 against the build-up's
+# 0.0214.  What the build-up leaves out - the main-gear sponsons and wheel wells, winglets,
+# flap-track fairings, trim - goes here: 35 % of the component parasite drag makes the mean
+# cruise-speed error zero (`problems/validation/p2006t_drag.py`, which derives it and whose test
+# holds this value to it).  It carries the validation's assumptions (propeller efficiency 0.806,
+# Raymer's Oswald factor, the AFM's "power %" read of the 69 kW continuous rating) and books the
+# whole deficit to the airframe, none to the Rotax installation an electric airframe does not
+# carry.  GA-2P and GA-8P are this airframe; the X-57 Mod IV (a new wing) keeps the default 10 %.
+P2006T_LEAKAGE_FRACTION = 0.35
+P2006T_DRAG = AirframeDragConfig(leakage_protuberance_fraction=P2006T_LEAKAGE_FRACTION)
 
 # Motors.  The paper's ratings (Table 1: 2 x 52.7 kW, 8 x 25.19 kW, 8 x 100 kW) are the
 # initial values; the rating is sized with the mission (MotorConfig.sized) so that no
@@ -143,7 +158,7 @@ def ga2p(rotation: str = "inboard_up") -> VehicleConfig:
         x_ahead_of_le_m=0.93, z_below_wing_m=0.226, rotation=rotation, nacelle_wetted_area_m2=4.5)
     return VehicleConfig(
         "GA-2P", "airplane", wings=(main, htail, vtail), rotor_groups=(props,), fuselage=fus,
-        battery=BatteryConfig(120, 80), togw_reference_kg=3549 * u.LB, cg_z_m=GA_CG_Z_M,
+        drag=P2006T_DRAG, battery=BatteryConfig(120, 80), togw_reference_kg=3549 * u.LB, cg_z_m=GA_CG_Z_M,
         mass_inputs={"airframe_calibration": GA_AIRFRAME_CALIBRATION, "main_gear_length_in": 24.0,
                      "nose_gear_length_in": 20.0, "uninstalled_avionics_lb": 40.0},
         notes=("X-57 Mod II airframe (P2006T wing and tails) per SUAVE's model; "
@@ -161,7 +176,7 @@ def ga8p(rotation: str = "inboard_up") -> VehicleConfig:
         x_ahead_of_le_m=0.56, z_below_wing_m=0.0, rotation=rotation, nacelle_wetted_area_m2=1.2)
     return VehicleConfig(
         "GA-8P", "airplane", wings=(main, htail, vtail), rotor_groups=(props,), fuselage=fus,
-        battery=BatteryConfig(120, 80), togw_reference_kg=3622 * u.LB, cg_z_m=GA_CG_Z_M,
+        drag=P2006T_DRAG, battery=BatteryConfig(120, 80), togw_reference_kg=3622 * u.LB, cg_z_m=GA_CG_Z_M,
         mass_inputs={"airframe_calibration": GA_AIRFRAME_CALIBRATION, "main_gear_length_in": 24.0,
                      "nose_gear_length_in": 20.0, "uninstalled_avionics_lb": 40.0},
         notes=("Nacelles scaled to the 25 kW motors: ~1.2 m^2 wetted each.",))
