@@ -69,8 +69,20 @@ def test_active_constraints_rendered_or_not_available(tmp_path, ga2p_run):
     assert "propellers tip Mach" in page and "0.01234" in page and "-0.0055" in page
 
 
-def test_undefined_efficiencies_are_dashes(ga2p_run):
-    page = (ga2p_run / "report.html").read_text()
+@pytest.fixture(scope="module")
+def windmilling_run(tmp_path_factory):
+    """A committed GA-2P optimum whose base leg windmills: the what-if with Raymer's 10 % leakage
+    allowance (`results/ga2p/raymer_leakage`; with the P2006T calibration the default's base leg
+    keeps drawing power), rendered afresh."""
+    from mdo.plots import render_run
+    run = tmp_path_factory.mktemp("report_windmilling") / "ga2p"
+    shutil.copytree(ROOT / "results" / "ga2p" / "raymer_leakage", run)
+    render_run(run)
+    return run
+
+
+def test_undefined_efficiencies_are_dashes(windmilling_run):
+    page = (windmilling_run / "report.html").read_text()
     rows = {m.group(1): m.group(0) for m in re.finditer(r"<tr><td>(\w+)</td>.*?</tr>", page)}
     # where energy flows backwards (windmilling: shaft or battery energy <= 0; a propulsive
     # energy <= 0) the efficiency is a dash, never a number; the base leg's propellers windmill

@@ -7,6 +7,7 @@ import pytest
 
 from mdo.core.errors import InputError
 from mdo.vehicle.aircraft import Aircraft
+from mdo.vehicle.config import AirframeDragConfig
 from mdo.vehicle.catalog import ga2p
 from mdo.powertrain.pmsm import drive_node
 from mdo.vehicle.guess import bemt_numeric, omega_for_thrust
@@ -17,7 +18,10 @@ STOPS = (-15.0, 30.0)
 
 
 def _variable_pitch_ga2p():
-    cfg = ga2p()
+    # with Raymer's 10 % leakage allowance (AirframeDragConfig's default), as when this check was
+    # written: with the P2006T calibration the schedule's pitch sits within 0.1 % of the best at the
+    # cruise node checked below, so the fixed pitch's excess would not be measurable there
+    cfg = replace(ga2p(), drag=AirframeDragConfig())
     return replace(cfg, rotor_groups=(replace(cfg.rotor_groups[0], collective_range_deg=STOPS),))
 
 

@@ -12,9 +12,12 @@ from mdo.vehicle.aircraft import Aircraft
 from mdo.vehicle.catalog import ga2p
 
 
-def _short_mission(nodes=4, free=("rotor", "wing", "positions")):
+def _short_mission(nodes=4, free=("rotor", "wing", "positions"), analysis=False):
+    # analysis: the frozen design's design-level limits reported, not enforced (as `mdo run --analysis`):
+    # Table 3's blade exceeds the tip-Mach limit in this 160 mph climb with the P2006T's drag
     p = Problem("ga2p_short")
-    v = Aircraft(ga2p(), n_stations=10, wing_strips=12, tail_strips=3, free=free)
+    v = Aircraft(ga2p(), n_stations=10, wing_strips=12, tail_strips=3, free=free,
+                 design_point_constraints=not analysis)
     segs = [
         LinearSpeedConstantRate("CL", altitude_start_m=500 * u.FT, altitude_end_m=1500 * u.FT,
                                 speed_start_mps=150 * u.MPH, speed_end_mps=160 * u.MPH, climb_rate_mps=500 * u.FT_PER_MIN,
@@ -28,7 +31,7 @@ def _short_mission(nodes=4, free=("rotor", "wing", "positions")):
 
 @pytest.fixture(scope="module")
 def analysis():
-    p, v, m = _short_mission()
+    p, v, m = _short_mission(analysis=True)
     p.freeze_design()
     sol = p.solve(verbose=False)
     return p, v, m, sol
@@ -90,7 +93,7 @@ def test_mass_and_geometry_follow_the_design(analysis):
 def test_short_optimization_improves_and_keeps_constraints():
     # two stages, as `mdo run` does (DESIGN rule 7): the baseline analysis, then the
     # optimization warm-started from it
-    base_p, *_ = _short_mission(free=("rotor", "wing"))
+    base_p, *_ = _short_mission(free=("rotor", "wing"), analysis=True)
     base_p.freeze_design()
     base = base_p.solve(verbose=False)
     assert base.success, base.status
