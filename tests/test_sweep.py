@@ -62,6 +62,7 @@ def test_nearest_neighbour_keeps_structural_keys():
     ([], "empty grid"),
     (["--grid", "final_y=4.0", "--scheduler", "tcp://127.0.0.1:9", "--scheduler-timeout", "1"],
      "no Dask scheduler reachable"),
+    (["--grid", "final_y=4.0", "--point-timeout", "0"], "--point-timeout: must be > 0 seconds"),
 ])
 def test_bad_input_one_line_exit_2(tmp_path, capsys, argv, text):
     out = tmp_path / "sw"
@@ -102,6 +103,21 @@ def test_failed_point_does_not_stop_the_others_and_resume_skips(tmp_path, capsys
     assert main(["sweep", str(BRACH), "--grid", "nodes=1,8", "--out", str(out), "--workers", "0"]) == 1
     assert "2 already finished, 0 to run" in capsys.readouterr().out
     assert (out / ".points" / "nodes=8.json").stat().st_mtime_ns == stamp
+
+
+def test_a_point_past_its_time_budget_is_stopped_kept_and_not_rerun(tmp_path, capsys):
+    """--point-timeout: a point still running when its budget is spent is killed and recorded as
+    stopped, with its log; the sweep goes on, and a resume does not run it again."""
+    out = tmp_path / "sw"
+    argv = ["sweep", str(BRACH), "--grid", "final_y=4.0", "--out", str(out), "--workers", "0",
+            "--point-timeout", "0.2"]                      # an `mdo run` needs seconds to import
+    assert main(argv) == 1
+    row = read_table(out / "sweep.csv")[0]
+    assert row["status"] == "stopped after 0.2 s (--point-timeout)" and row["success"] is False
+    assert "stopped after 0.2 s" in (out / ".points" / "final_y=4.0.log").read_text()
+    capsys.readouterr()
+    assert main(argv) == 1
+    assert "1 already finished, 0 to run" in capsys.readouterr().out
 
 
 # ---------------------------------------------------------------- acceptance

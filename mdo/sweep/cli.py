@@ -43,6 +43,9 @@ def register(sub):
     p.add_argument("--retry-failed", action="store_true", help="re-run finished points that did not converge")
     p.add_argument("--max-iter", type=int, help="IPOPT iteration limit of every point")
     p.add_argument("--hessian", choices=("exact", "full", "limited-memory"), help="as `mdo run --hessian`")
+    p.add_argument("--point-timeout", type=float, metavar="S",
+                   help="wall-time budget of each point in seconds: a run still going then is killed and the "
+                        "point recorded as stopped (its log kept), and the sweep goes on")
     p.add_argument("--x", help="(plot) grid key on the horizontal axis")
     p.add_argument("--y", help="(plot) column of sweep.csv (default objective)")
     p.add_argument("--carpet", metavar="KEY2", help="(plot) second grid key: a carpet plot")
@@ -68,6 +71,8 @@ def _cmd_sweep(args) -> int:
         raise InputError("--workers", f"must be >= 0, got {args.workers}")
     if args.max_iter is not None and args.max_iter < 0:
         raise InputError("--max-iter", f"must be >= 0, got {args.max_iter}")
+    if args.point_timeout is not None and not args.point_timeout > 0:
+        raise InputError("--point-timeout", f"must be > 0 seconds, got {args.point_timeout:g}")
     points = expand(grid, params)
     out = Path(args.out or Path("results") / "sweeps" / Path(args.target).stem)
     if out.exists() and not out.is_dir():
@@ -87,7 +92,7 @@ def _run(args, grid, points, out, fixed, run_args, client) -> int:
     try:
         rows = run_sweep(args.target, grid, points, out, fixed=fixed, workers=args.workers,
                          warm_start=args.warm_start, retry_failed=args.retry_failed, run_args=run_args,
-                         client=client)
+                         client=client, point_timeout_s=args.point_timeout)
     except KeyboardInterrupt:
         print(f"mdo sweep: interrupted; finished points kept in {out} (sweep.csv is current); "
               f"run the same command to resume", flush=True)

@@ -75,7 +75,8 @@ def finished(run_dir) -> bool:
     if _complete_summary(run_dir) is not None:
         return True
     rec = read_json(record_path(run_dir))
-    return isinstance(rec, dict) and rec.get("returncode") in _ENDED
+    # a point stopped by its time budget (--point-timeout) ended as the user asked: kept, not re-run
+    return isinstance(rec, dict) and (rec.get("returncode") in _ENDED or bool(rec.get("timed_out")))
 
 
 def point_status(run_dir) -> str:
@@ -93,6 +94,8 @@ def point_status(run_dir) -> str:
     code = rec.get("returncode")
     if code == 2:
         return "input error"
+    if rec.get("timed_out"):
+        return f"stopped after {rec['timeout_s']:g} s (--point-timeout)"
     return f"crashed (exit {code})"
 
 
@@ -137,12 +140,17 @@ def run_point(problem, run_dir, point: dict, fixed: dict | None = None, warm_sta
     baseline stage.  If that run does not converge, the point is run again cold (baseline
     and optimization) in the same folder, so a warm start can only save time, never
     lose a point.  ``run_args``: extra ``mdo run`` flags (``--max-iter``, ``--hessian``).
+    ``timeout_s``: the point's wall-time budget (``mdo sweep --point-timeout``).  A run still going
+    then is killed (SIGKILL: one IPOPT iteration can spend many minutes inside the linear solver,
+    where no signal handler runs), the point is recorded as stopped (its log and the killed run's
+    folder are kept) and, being the user's choice, is not re-run cold nor on resume.
     """
     run_dir = Path(run_dir)
     log_path(run_dir).parent.mkdir(parents=True, exist_ok=True)
     record_path(run_dir).unlink(missing_ok=True)
     t0 = time.time()
     attempts = []
+    timed_out = False
     for ws in ([warm_start, None] if warm_start is not None else [None]):
         cmd = _command(problem, run_dir, point, fixed or {}, ws, run_args)
         # --force: leftovers of an interrupted or warm attempt are replaced
@@ -157,12 +165,15 @@ def run_point(problem, run_dir, point: dict, fixed: dict | None = None, warm_sta
                                       env={**os.environ, "PYTHONUNBUFFERED": "1"}).returncode
             except subprocess.TimeoutExpired:
                 code = -int(signal.SIGKILL)
+                timed_out = True
+                log.write(f"mdo sweep: stopped after {timeout_s:g} s (--point-timeout)\n")
         attempts.append({"warm_start": None if ws is None else str(ws), "returncode": code,
                          "wall_time_s": round(time.time() - t1, 3)})
-        if code == 0:
+        if code == 0 or timed_out:
             break
     record = {"point": point, "fixed": fixed or {}, "problem": str(problem), "command": cmd,
               "returncode": attempts[-1]["returncode"], "attempts": attempts,
+              "timed_out": timed_out, "timeout_s": timeout_s,
               "warm_start": attempts[0]["warm_start"], "warm_start_used": attempts[-1]["warm_start"],
               "wall_time_s": round(time.time() - t0, 3), "host": os.uname().nodename,
               "git_commit": git_commit(),

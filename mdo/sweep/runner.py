@@ -122,12 +122,12 @@ def _shown(path: Path) -> str:
 
 def run_sweep(problem, grid: dict, points: list, out, *, fixed: dict | None = None, workers: int = 2,
               scheduler: str | None = None, warm_start: bool = False, retry_failed: bool = False,
-              run_args=(), client=None, stream=None) -> list:
+              run_args=(), client=None, stream=None, point_timeout_s: float | None = None) -> list:
     """Run every unfinished point of ``points`` into ``out/<point name>/``; returns the table rows.
 
     ``client``: an existing Dask client (tests); otherwise one from :func:`connect`,
     closed at the end.  ``sweep.json`` records the call; ``sweep.csv`` is rewritten
-    after each point.
+    after each point.  ``point_timeout_s``: each point's wall-time budget (``run_point``).
     """
     stream = stream or sys.stdout
     out = Path(out)
@@ -140,6 +140,7 @@ def run_sweep(problem, grid: dict, points: list, out, *, fixed: dict | None = No
     out.mkdir(parents=True, exist_ok=True)
     write_json_atomic(out / "sweep.json", {"problem": _shown(problem), "grid": grid, "fixed": fixed or {},
                                            "run_args": list(run_args), "warm_start": warm_start,
+                                           "point_timeout_s": point_timeout_s,
                                            "git_commit": git_commit()})
     progress = _Progress(len(points), len(points) - len(pending), stream)
     print(f"sweep: {len(points)} points, {len(points) - len(pending)} already finished, "
@@ -149,7 +150,7 @@ def run_sweep(problem, grid: dict, points: list, out, *, fixed: dict | None = No
         i, nb = _next_point(pending, done, grid, warm_start)
         p = pending.pop(i)
         ws = nb["dir"] / "solution.json" if nb is not None else None
-        return p, runner(problem, dirs[point_name(p)], p, fixed or {}, ws, tuple(run_args))
+        return p, runner(problem, dirs[point_name(p)], p, fixed or {}, ws, tuple(run_args), point_timeout_s)
 
     def finish(p, rec, running):
         rec["status"] = rec.get("status") or "lost"
@@ -177,9 +178,9 @@ def _run_dask(client, scheduler, workers, pending, submit, finish) -> None:
         slots = max(1, sum(client.nthreads().values()))
         inflight = {}
 
-        def runner(problem, run_dir, p, fixed, ws, run_args):
+        def runner(problem, run_dir, p, fixed, ws, run_args, timeout_s):
             return client.submit(run_point, str(problem), str(run_dir), p, fixed, None if ws is None else str(ws),
-                                 run_args, pure=False, key=f"mdo-sweep-{run_dir.name}-{time.time_ns()}")
+                                 run_args, timeout_s, pure=False, key=f"mdo-sweep-{run_dir.name}-{time.time_ns()}")
 
         while pending or inflight:
             while pending and len(inflight) < slots:
