@@ -34,13 +34,11 @@ wing-tip cruise motor's mirror at take-off power, or of a high-lift motor's wher
 ``leakage_fraction`` (the airframe's leakage & protuberance allowance, ``AirframeDragConfig``; 0.35 is what the
 P2006T flight manual implies, ``results/validation/p2006t_drag.md``).
 """
-from dataclasses import replace
-
 from mdo.core.units import FT, INCH, KNOT, MPH, NMI
 from mdo.mission import Mission
 from mdo.mission.profiles import ga_segments
 from mdo.nlp import Problem
-from mdo.studies import AIRCRAFT_OPTIONS, AIRFRAME_OPTIONS, minimize_battery_energy
+from mdo.studies import AIRCRAFT_OPTIONS, AIRFRAME_OPTIONS, airframe_variant, minimize_battery_energy
 from mdo.wake import DEFAULT_CORE_REL
 from mdo.vehicle.aircraft import Aircraft
 from mdo.vehicle.catalog import GA_CG_Z_M, GA_STABILATOR_RANGE_DEG
@@ -125,8 +123,7 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 1
           leakage_fraction: float | None = None):
     p = Problem("x57_mod4", "X-57 Maxwell Mod IV whole-mission optimization (two rotor groups)")
     cfg = x57_mod4(cells_parallel, cruise_speed_mph * MPH, cruise_altitude_ft * FT)
-    if leakage_fraction is not None:
-        cfg = replace(cfg, drag=replace(cfg.drag, leakage_protuberance_fraction=float(leakage_fraction)))
+    cfg = airframe_variant(cfg, leakage_fraction=leakage_fraction)   # the defaults return cfg itself
     vehicle = Aircraft(cfg, trim=trim, wing_viscous=wing_viscous, blown_profile_drag=blown_profile_drag, free=("rotor", "wing"), n_stations=n_stations, wing_strips=wing_strips,
                        coupling=coupling, design_point_constraints=not analysis, wake_core_rel=wake_core_rel, engine_out=engine_out, fin_sizing=fin_sizing)
     folded = {s: {"highlift.active": 0.0} for s in ("CL", "CR", "D", "DL", "RCL", "RCR", "RD")}

@@ -61,7 +61,7 @@ from scipy.optimize import brentq, minimize_scalar
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT))
 
-from mdo.core.atmosphere import density, dynamic_viscosity, speed_of_sound  # noqa: E402
+from mdo.core.atmosphere import density, dynamic_viscosity, speed_of_sound, temperature  # noqa: E402
 from mdo.core import units as u                   # noqa: E402
 from mdo.vehicle.catalog import P2006T_LEAKAGE_FRACTION, _ga_airframe  # noqa: E402
 from mdo.wing.buildup import INTERFERENCE, BodyComponent, DragBuildup, SurfaceComponent  # noqa: E402
@@ -209,9 +209,8 @@ def afm_climb_checks(bu, power_W=P_MCP_W):
     rows = []
     for mass, table in AFM_CLIMB.items():
         for h_ft, vy, rates in table:
-            t_isa_c = 15.0 - 0.0019812 * h_ft
-            afm = float(np.interp(t_isa_c, AFM_CLIMB_TEMPS_C, rates))
             h = h_ft * u.FT
+            afm = float(np.interp(float(temperature(h)) - 273.15, AFM_CLIMB_TEMPS_C, rates))
             op = best_climb(bu, h, mass, N_ENGINES * power_W * gagg_farrar(h))
             kias = op["V"] / u.KNOT * math.sqrt(float(density(h) / density(0.0)))
             rows.append((mass, h_ft, vy, afm, op["roc_fpm"], op["roc_fpm"] / afm - 1, kias))
@@ -254,10 +253,15 @@ def run():
     return bu, res
 
 
+def with_leakage(bu, fraction):
+    """The same build-up with another leakage & protuberance allowance."""
+    return DragBuildup(bu.s_ref_m2, bu.components, excrescence_fraction=fraction, cooling=bu.cooling)
+
+
 def calibrated_p2006t(bu):
     """The build-up with the catalog's P2006T calibration (``mdo.vehicle.catalog.P2006T_LEAKAGE_FRACTION``,
     the allowance GA-2P and GA-8P fly with) instead of Raymer's 10 %."""
-    return DragBuildup(bu.s_ref_m2, bu.components, excrescence_fraction=P2006T_LEAKAGE_FRACTION, cooling=bu.cooling)
+    return with_leakage(bu, P2006T_LEAKAGE_FRACTION)
 
 
 def afm_leakage_fraction(bu):
@@ -265,8 +269,7 @@ def afm_leakage_fraction(bu):
     (everything else as stated): the allowance the flight manual implies, for what-if runs
     (``-o leakage_fraction=``)."""
     def mean_err(x):
-        b = DragBuildup(bu.s_ref_m2, bu.components, excrescence_fraction=x, cooling=bu.cooling)
-        return sum(r[4] for r in afm_cruise_checks(b)) / len(AFM_CRUISE)
+        return sum(r[4] for r in afm_cruise_checks(with_leakage(bu, x))) / len(AFM_CRUISE)
     return brentq(mean_err, bu.excrescence_fraction, 0.5, xtol=1e-4)
 
 
@@ -287,7 +290,7 @@ def sensitivity(bu):
             SENS.clear()
             SENS.update(saved)
         rows.append((label, c["V"] / u.KNOT, cl["roc_fpm"]))
-    leak = DragBuildup(bu.s_ref_m2, bu.components, excrescence_fraction=0.05, cooling=bu.cooling)
+    leak = with_leakage(bu, 0.05)
     rows.append(("leakage 5 % instead of 10 %", cruise_speed(leak, h7, 1180.0, p7)["V"] / u.KNOT,
                  climb_at(leak, 90 * u.KNOT, 0.0, 1180.0, N_ENGINES * P_MAX_W)["roc_fpm"]))
     return rows
