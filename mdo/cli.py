@@ -285,7 +285,8 @@ def _solve_stage(problem, stage_dir, args, what, progress, figures: str = "now")
     progress(f"{problem.name} ({what}): {size['variables']} variables, {size['constraints']} constraints",
              always=True)
     sol = solve_into(problem, stage_dir, max_iter=args.max_iter, verbose=not args.quiet,
-                     solve_options={"hessian": args.hessian}, progress=progress, figures=figures)
+                     solve_options={"hessian": args.hessian, "threads": args.threads}, progress=progress,
+                     figures=figures)
     print(f"\nmdo: {problem.name}: {sol.status} after {sol.iterations} iterations, "
           f"{sol.wall_time_s:.1f} s; {sol.objective_name} = {sol.objective:.6g} {sol.objective_unit}")
     for k, v in sol.summary_values().items():
@@ -363,6 +364,10 @@ def build_parser() -> argparse.ArgumentParser:
                      help="exact Hessian of the Lagrangian, split into its node block and global rows "
                           "(default); full: the same matrix by one colouring of all variables (slower); "
                           "limited-memory: IPOPT's L-BFGS approximation")
+    run.add_argument("--threads", type=int, choices=(1, 2), default=None,
+                     help="threads for the constraint Jacobian and the Hessian, each computed in two parts "
+                          "(default: MDO_THREADS, else 2 on a machine with two or more cores); the same "
+                          "matrices, less wall time")
     run.set_defaults(func=_cmd_run)
 
     chk = sub.add_parser("check", help="check a run folder against its limits (exit 1 if one is exceeded)",

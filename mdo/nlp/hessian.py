@@ -29,8 +29,10 @@ import casadi as ca
 import numpy as np
 
 from ..core.errors import InputError
+from .threads import nonzero_index, scatter, two_thread_sum, upper_entries
 
-__all__ = ["HESSIAN_KINDS", "general_rows", "global_variables", "lagrangian_hessian_functions"]
+__all__ = ["HESSIAN_KINDS", "constraint_jacobian_function", "general_rows", "global_variables",
+           "lagrangian_hessian_functions"]
 
 HESSIAN_KINDS = ("full", "split")
 
@@ -42,15 +44,16 @@ def global_variables(problem) -> list:
 
 def _positions(problem, x) -> dict:
     """Each variable's entries as indices into the solver's ``x``."""
+    variables = list(problem.variables.values())
+    sp = ca.Function("pos", [x], [ca.veccat(*[v.scaled for v in variables])]).jac_sparsity(0, 0)
+    rows, cols = (np.asarray(a, int) for a in sp.get_triplet())
+    where = np.full(sp.size1(), -1, dtype=int)
+    where[rows] = cols
     out, seen = {}, 0
-    for v in problem.variables.values():
-        sp = ca.Function("pos", [x], [ca.vec(v.scaled)]).jac_sparsity(0, 0)
-        rows, cols = sp.get_triplet()
-        idx = np.empty(v.size, dtype=int)
-        idx[np.asarray(rows, int)] = np.asarray(cols, int)
-        out[v.name] = idx
+    for v in variables:
+        out[v.name] = where[seen:seen + v.size]
         seen += v.size
-    if seen != x.numel():
+    if seen != x.numel() or (where < 0).any():
         raise InputError("hessian", f"{x.numel() - seen} solver variables are not problem variables; use 'full'")
     return out
 
@@ -72,7 +75,7 @@ def general_rows(x, p, g) -> np.ndarray:
 
 
 def lagrangian_hessian_functions(problem, kind: str = "split", *, simple_bounds: bool = True,
-                                 skip_fixed: bool = True) -> ca.Function:
+                                 skip_fixed: bool = True, threads: int = 1, rows=None) -> ca.Function:
     """``nlp_hess_l(x, p, lam_f, lam_g) -> triu(H)`` of ``problem``'s Opti.
 
     ``kind``: ``"full"`` (CasADi's own, one colouring of x) or ``"split"`` (module
@@ -80,13 +83,16 @@ def lagrangian_hessian_functions(problem, kind: str = "split", *, simple_bounds:
     ``detect_simple_bounds`` plugin option, as ``Problem.solve`` sets it), so
     ``lam_g`` holds only the general rows (:func:`general_rows`).  Give the result to
     IPOPT as the ``hess_lag`` plugin option.  ``skip_fixed``: leave out the rows of frozen
-    global variables (module docstring; only right while IPOPT removes fixed variables)."""
+    global variables (module docstring; only right while IPOPT removes fixed variables).
+    ``threads=2``: the split's two parts, the node block and the global rows, each in its own
+    thread (:mod:`mdo.nlp.threads`; the same matrix).  ``rows``: :func:`general_rows`, if the
+    caller has them."""
     if kind not in HESSIAN_KINDS:
         raise InputError("hessian", f"one of {', '.join(HESSIAN_KINDS)}, got {kind!r}")
     opti = problem.opti
     x, g, f, p = opti.x, opti.g, opti.f, opti.p
     if simple_bounds:
-        g = g[[int(i) for i in general_rows(x, p, g)]]
+        g = g[[int(i) for i in (general_rows(x, p, g) if rows is None else rows)]]
     lam_f, lam_g = ca.MX.sym("lam_f"), ca.MX.sym("lam_g", g.numel())
     L = lam_f * f + (ca.dot(lam_g, g) if g.numel() else 0)
     glob = {v.name for v in global_variables(problem)}
@@ -101,6 +107,8 @@ def lagrangian_hessian_functions(problem, kind: str = "split", *, simple_bounds:
         Y = ca.veccat(*[v.scaled for v in node_vars])
         D = ca.veccat(*[v.scaled for v in glob_vars])
         ny, nd, nf = Y.numel(), D.numel(), sum(v.size for v in fixed)
+        if threads > 1 and nd:
+            return _two_thread_hessian(x, p, lam_f, lam_g, L, Y, D, node_vars, glob_vars, pos)
         H_yy = ca.hessian(L, Y)[0]
         H_d = ca.jacobian(ca.gradient(L, D), ca.vertcat(Y, D))         # [H_dy, H_dd]
         H_blk = ca.vertcat(ca.horzcat(H_yy, H_d[:, :ny].T), H_d)
@@ -113,3 +121,61 @@ def lagrangian_hessian_functions(problem, kind: str = "split", *, simple_bounds:
         H = ca.mtimes(ca.mtimes(P.T, H_blk), P)
     return ca.Function("nlp_hess_l", [x, p, lam_f, lam_g], [ca.triu(H)],
                        ["x", "p", "lam_f", "lam_g"], ["triu_hess_gamma_x_x"])
+
+
+def _two_thread_hessian(x, p, lam_f, lam_g, L, Y, D, node_vars, glob_vars, pos) -> ca.Function:
+    """The split Hessian with its node block and its global rows in two threads."""
+    ny = Y.numel()
+    iy = np.concatenate([pos[v.name] for v in node_vars])
+    idd = np.concatenate([pos[v.name] for v in glob_vars])
+    H_yy = ca.hessian(L, Y)[0]                                          # symmetric: keep r <= c
+    sa, ra, ca_ = upper_entries(H_yy, iy, iy, np.ones(ny, bool))
+    R = ca.jacobian(ca.gradient(L, D), ca.vertcat(Y, D))                # [H_dy, H_dd]
+    # the node columns' mirrors are rows of no part; the global columns' are rows of R
+    sb, rb, cb = upper_entries(R, idd, np.concatenate([iy, idd]),
+                               np.concatenate([np.zeros(ny, bool), np.ones(idd.size, bool)]))
+    n = x.numel()
+    sp = ca.Sparsity.triplet(n, n, [int(k) for k in np.concatenate([ra, rb])],
+                             [int(k) for k in np.concatenate([ca_, cb])])
+
+    def where(r, c):
+        return nonzero_index(sp, r, c)
+
+    parts = [scatter(H_yy.nz[[int(k) for k in sa]], where(ra, ca_), sp.nnz()),
+             scatter(R.nz[[int(k) for k in sb]], where(rb, cb), sp.nnz())]
+    syms, nz = two_thread_sum("nlp_hess_l", [x, p, lam_f, lam_g], parts, sp.nnz())
+    return ca.Function("nlp_hess_l", syms, [ca.MX(sp, nz)],
+                       ["x", "p", "lam_f", "lam_g"], ["triu_hess_gamma_x_x"])
+
+
+def constraint_jacobian_function(problem, *, simple_bounds: bool = True, threads: int = 1,
+                                 skip_fixed: bool = True, rows=None) -> ca.Function:
+    """``nlp_jac_g(x, p) -> (g, jac_g_x)`` of ``problem``'s Opti.  With ``threads=2`` its node
+    columns (the global variables held fixed, as for the Hessian's node block) and its
+    global columns each in their own thread (:mod:`mdo.nlp.threads`; the same matrix, except
+    that a frozen global's columns are zeros with ``skip_fixed``).  Give the result to IPOPT as the ``jac_g`` plugin option (``simple_bounds`` and
+    ``skip_fixed`` and ``rows`` as for :func:`lagrangian_hessian_functions`)."""
+    opti = problem.opti
+    x, g, p = opti.x, opti.g, opti.p
+    if simple_bounds:
+        g = g[[int(i) for i in (general_rows(x, p, g) if rows is None else rows)]]
+    m = g.numel()
+    glob = [v for v in global_variables(problem) if not (skip_fixed and v.frozen)]
+    node_vars = [v for v in problem.variables.values() if v.shape[1] != 1]
+    if threads <= 1 or m == 0 or not glob or not node_vars:
+        return ca.Function("nlp_jac_g", [x, p], [g, ca.jacobian(g, x)], ["x", "p"], ["g", "jac_g_x"])
+    pos = _positions(problem, x)
+    # the whole Jacobian's sparsity, as CasADi's own nlp_jac_g has it; a frozen global's
+    # columns stay in it with zeros (IPOPT removes fixed variables and never reads them)
+    sp = ca.Function("jac_pattern", [x, p], [g]).jac_sparsity(0, 0)
+    n_nz = sp.nnz()
+    vecs = []
+    for k, group in enumerate((node_vars, glob)):
+        Jk = ca.jacobian(g, ca.veccat(*[v.scaled for v in group]))
+        i, j = Jk.sparsity().get_triplet()
+        at = nonzero_index(sp, i, np.concatenate([pos[v.name] for v in group])[np.asarray(j, int)])
+        if (at < 0).any():
+            raise RuntimeError("nlp_jac_g: a column block has entries outside the Jacobian's sparsity")
+        vecs.append(ca.vertcat(g if k == 0 else ca.MX.zeros(m, 1), scatter(Jk.nz[:], at, n_nz)))
+    syms, both = two_thread_sum("nlp_jac_g", [x, p], vecs, m + n_nz)
+    return ca.Function("nlp_jac_g", syms, [both[:m], ca.MX(sp, both[m:])], ["x", "p"], ["g", "jac_g_x"])

@@ -29,10 +29,10 @@ import numpy as np
 
 from ..core.errors import InputError
 from ..core.signals import interrupt_signal
-from .hessian import lagrangian_hessian_functions
+from .hessian import constraint_jacobian_function, general_rows, lagrangian_hessian_functions
 from .warm_start import WarmStart, WarmStartError, WarmStartMixin, read_solution  # noqa: F401
 from .ipopt import (CRASH_ON_EXIT_STATUS, FRAGILE, FROM_BASELINE_OPTIONS, HESSIAN_CHOICES,  # noqa: F401
-                    DivergenceWatch,
+                    DivergenceWatch, check_threads, default_threads,
                     INTERRUPT_STATUS, WARM_START_OPTIONS, _outcome, _signals_as_interrupts)
 # re-exported: the solved side lives in mdo.nlp.solution
 from .solution import (ACTIVE_SLACK, DESIGN_BOUND_FRACTION, Solution, _readable, _variable_arrays,  # noqa: F401
@@ -337,7 +337,8 @@ class Problem(WarmStartMixin):
     # ------------------------------------------------------------------ solve
     def solve(self, *, log_path: str | os.PathLike | None = None, max_iter: int | None = None,
               verbose: bool = True, options: dict | None = None, raise_on_failure: bool = False,
-              hessian: str = "exact", progress: Callable | None = None) -> "Solution":
+              hessian: str = "exact", progress: Callable | None = None,
+              threads: int | None = None) -> "Solution":
         """Solve with IPOPT; stream the log to the terminal and to ``log_path``.
 
         Returns a ``Solution`` whatever the outcome (check ``.success``); with
@@ -347,7 +348,9 @@ class Problem(WarmStartMixin):
         CasADi's one colouring of all variables, slower) or ``"limited-memory"``.
         SIGINT and SIGTERM stop IPOPT and keep the last iterate (status
         ``Interrupted_By_User`` / ``Terminated_By_Signal``).  ``progress(text)`` is
-        told of the silent phases.
+        told of the silent phases.  ``threads`` (1 or 2; default
+        :func:`mdo.nlp.ipopt.default_threads`): the Jacobian's and the exact Hessian's two
+        parts each in their own thread (:mod:`mdo.nlp.threads`; the same matrices).
         """
         if self.objective is None:
             self.opti.minimize(0)
@@ -378,9 +381,15 @@ class Problem(WarmStartMixin):
             ipopt.update(options)
         plugin = {"detect_simple_bounds": True, "print_time": verbose,
                   "error_on_fail": False, "expand": False}
+        threads = default_threads() if threads is None else check_threads(threads)
+        skip_fixed = ipopt.get("fixed_variable_treatment", "make_parameter") == "make_parameter"
+        rows = general_rows(self.opti.x, self.opti.p, self.opti.g) if hessian == "exact" or threads > 1 else None
         if hessian == "exact":   # the same matrix, computed by structure (mdo.nlp.hessian)
-            plugin["hess_lag"] = lagrangian_hessian_functions(
-                self, "split", skip_fixed=ipopt.get("fixed_variable_treatment", "make_parameter") == "make_parameter")
+            plugin["hess_lag"] = lagrangian_hessian_functions(self, "split", skip_fixed=skip_fixed,
+                                                              threads=threads, rows=rows)
+        if threads > 1:          # the same matrix, its node and global columns in two threads
+            plugin["jac_g"] = constraint_jacobian_function(self, threads=threads, skip_fixed=skip_fixed,
+                                                           rows=rows)
         self.opti.solver("ipopt", plugin, ipopt)
         watch = self.divergence_watch if log_path is not None else None
         if watch is not None:

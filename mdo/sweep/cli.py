@@ -43,6 +43,9 @@ def register(sub):
     p.add_argument("--retry-failed", action="store_true", help="re-run finished points that did not converge")
     p.add_argument("--max-iter", type=int, help="IPOPT iteration limit of every point")
     p.add_argument("--hessian", choices=("exact", "full", "limited-memory"), help="as `mdo run --hessian`")
+    p.add_argument("--threads", type=int, choices=(1, 2),
+                   help="as `mdo run --threads` for every point (default: 1 when the points run in parallel "
+                        "on Dask workers, one core each; mdo run's default with --workers 0)")
     p.add_argument("--point-timeout", type=float, metavar="S",
                    help="wall-time budget of each point in seconds: a run still going then is killed and the "
                         "point recorded as stopped (its log kept), and the sweep goes on")
@@ -79,6 +82,8 @@ def _cmd_sweep(args) -> int:
         raise InputError("--out", f"{out} exists and is not a folder")
     run_args = (["--max-iter", str(args.max_iter)] if args.max_iter is not None else []) + \
                (["--hessian", args.hessian] if args.hessian else [])
+    threads = args.threads if args.threads is not None else (1 if args.workers > 0 or args.scheduler else None)
+    run_args += ["--threads", str(threads)] if threads is not None else []
     client = None
     if args.workers > 0 or args.scheduler:
         from .runner import connect

@@ -1,0 +1,84 @@
+"""The derivatives in two threads (mdo.nlp.threads) are the same matrices: the Hessian of
+the Lagrangian and the constraint Jacobian equal the one-thread ones at random points
+(with a frozen global too), and IPOPT takes the same path to the same optimum."""
+import casadi as ca
+import numpy as np
+import pytest
+
+from mdo.core import Collocation, InputError
+from mdo.nlp import Problem
+from mdo.nlp.hessian import _positions, constraint_jacobian_function, general_rows, lagrangian_hessian_functions
+from mdo.nlp.ipopt import check_threads, default_threads
+
+G = 9.80665
+
+
+def _problem(nodes=14, freeze=False):
+    """A brachistochrone with two globals (duration; end height, a design variable) and
+    simple rows the solver turns into bounds."""
+    p = Problem("brachistochrone_threads")
+    c = Collocation(nodes)
+    D = ca.DM(c.D).T
+    tf = p.variable("final_time", unit="s", lower=0.1, upper=10.0, init=2.0)
+    yf = p.variable("end_height", unit="m", lower=1.0, upper=9.0, init=5.0, design=True)
+    x = p.variable("x", (1, nodes), scale=10.0, lower=0, upper=10, init=10 * c.s)
+    y = p.variable("y", (1, nodes), scale=10.0, lower=0, upper=10, init=10 - 5 * c.s)
+    v = p.variable("v", (1, nodes), scale=10.0, lower=0, upper=100, init=9.9 * c.s)
+    th = p.variable("theta", (1, nodes), lower=0.0, upper=np.pi, init=np.full(nodes, 1.5))
+    p.constrain("x dynamics", ca.mtimes(x, D) - tf * v * ca.sin(th), scale=10.0)
+    p.constrain("y dynamics", ca.mtimes(y, D) + tf * v * ca.cos(th), scale=10.0)
+    p.constrain("v dynamics", ca.mtimes(v, D) - tf * G * ca.cos(th), scale=10.0)
+    p.constrain("start", ca.vertcat(x[0], y[0] - 10.0, v[0]))
+    p.constrain("end", ca.vertcat(x[-1] - 10.0, y[-1] - yf * ca.cos(0.1 * tf)))
+    p.minimize(tf + 0.01 * yf * yf * tf, unit="s")
+    if freeze:
+        p.freeze_design()
+    return p
+
+
+def _dense(m):
+    return np.asarray(ca.DM(m).full())
+
+
+@pytest.mark.parametrize("freeze", [False, True])
+def test_two_threads_give_the_same_hessian_and_jacobian(freeze):
+    p = _problem(freeze=freeze)
+    rows = general_rows(p.opti.x, p.opti.p, p.opti.g)
+    H1, H2 = (lagrangian_hessian_functions(p, "split", threads=t) for t in (1, 2))
+    J1, J2 = (constraint_jacobian_function(p, threads=t) for t in (1, 2))
+    for f in (H2, J2):
+        assert "ThreadMap" in {g.class_name() for g in f.find_functions()}
+    rng = np.random.default_rng(3)
+    x0 = np.asarray(p.opti.debug.value(p.opti.x, p.opti.initial()), float).ravel()
+    for _ in range(3):
+        x = x0 * (1 + 0.1 * rng.normal(size=x0.size))
+        lam = rng.normal(size=rows.size)
+        a, b = _dense(H1(x, [], 0.9, lam)), _dense(H2(x, [], 0.9, lam))
+        assert np.max(np.abs(a - b)) <= 1e-13 * np.max(np.abs(a))
+        (g1, j1), (g2, j2) = J1(x, []), J2(x, [])
+        assert np.max(np.abs(_dense(g1) - _dense(g2))) == 0.0
+        assert j1.sparsity() == j2.sparsity()      # what IPOPT is told, and nlp_size reports
+        j1, j2 = _dense(j1), _dense(j2)
+        if freeze:   # the frozen design's column is zeros (IPOPT removes fixed variables)
+            f = int(_positions(p, p.opti.x)["end_height"][0])
+            assert np.abs(j1[:, f]).max() > 0 and np.abs(j2[:, f]).max() == 0
+            j1, j2 = np.delete(j1, f, axis=1), np.delete(j2, f, axis=1)
+        assert np.max(np.abs(j1 - j2)) <= 1e-13 * np.max(np.abs(j1))
+
+
+def test_two_threads_take_the_same_ipopt_path():
+    sols = {t: _problem().solve(verbose=False, threads=t) for t in (1, 2)}
+    assert sols[1].success and sols[2].success
+    assert sols[1].iterations == sols[2].iterations
+    assert sols[2].objective == pytest.approx(sols[1].objective, rel=1e-10)
+
+
+def test_thread_count_is_checked(monkeypatch):
+    with pytest.raises(InputError, match="threads"):
+        _problem().solve(verbose=False, threads=3)
+    with pytest.raises(InputError, match="MDO_THREADS"):
+        monkeypatch.setenv("MDO_THREADS", "four")
+        default_threads()
+    monkeypatch.setenv("MDO_THREADS", "1")
+    assert default_threads() == 1
+    assert check_threads("2") == 2
