@@ -365,9 +365,8 @@ def build_parser() -> argparse.ArgumentParser:
                           "(default); full: the same matrix by one colouring of all variables (slower); "
                           "limited-memory: IPOPT's L-BFGS approximation")
     run.add_argument("--threads", type=int, choices=(1, 2), default=None,
-                     help="threads for the constraint Jacobian and the Hessian, each computed in two parts "
-                          "(default: MDO_THREADS, else 2 on a machine with two or more cores); the same "
-                          "matrices, less wall time")
+                     help="threads for the exact Hessian, computed in two parts (default: MDO_THREADS, else 2 "
+                          "on a machine with two or more cores); the same matrix to the bit, less wall time")
     run.set_defaults(func=_cmd_run)
 
     chk = sub.add_parser("check", help="check a run folder against its limits (exit 1 if one is exceeded)",

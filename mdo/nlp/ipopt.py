@@ -17,9 +17,9 @@ HESSIAN_CHOICES = ("exact", "full", "limited-memory")
 
 
 def default_threads() -> int:
-    """Threads for the NLP's derivatives (:mod:`mdo.nlp.threads`): ``MDO_THREADS`` if set,
+    """Threads for the exact Hessian (:mod:`mdo.nlp.threads`): ``MDO_THREADS`` if set,
     else 2 on a machine with two or more cores, else 1.  Only 1 and 2 mean something:
-    the Jacobian and the Hessian each have two parts."""
+    the Hessian has two parts."""
     env = os.environ.get("MDO_THREADS")
     if env is not None and env.strip():
         return check_threads(env, "MDO_THREADS")
@@ -34,7 +34,7 @@ def check_threads(value, field: str = "threads") -> int:
     except (TypeError, ValueError):
         n = None
     if n not in (1, 2) or str(value).strip() not in ("1", "2"):
-        raise InputError(field, f"1 or 2 (threads for the Jacobian and Hessian), got {value!r}")
+        raise InputError(field, f"1 or 2 (threads for the Hessian), got {value!r}")
     return n
 
 

@@ -6,15 +6,18 @@ solve.  Each is a sum of independent parts:
 
 * the Hessian's node block ``H_yy`` (the global variables held fixed) and the rows of
   the global variables ``[H_dy, H_dd]`` (:mod:`mdo.nlp.hessian`);
-* the Jacobian's rows, split in two halves of about equal nonzeros.
+* the Jacobian's node columns (globals held fixed) and global columns.
 
 Each part is a CasADi function that writes its entries into the nonzeros of the whole
 matrix (zeros elsewhere); a ``Switch`` over the two parts, mapped over two threads
 (``Function.map(2, "thread", 2)``), evaluates both at once and their sum is the
-matrix.  Every entry is computed by exactly one part with the same operations as in
-one thread, so the matrices are equal to round-off (``tests/test_threads.py``); only the
-wall time changes (``tests/bench/optimize.py``, ``results/benchmark.md``).  CPU time
-grows a little: each part evaluates the nominal graph it needs.
+matrix.  The Hessian's parts are the split's own expressions, so it is the same matrix to
+the bit and IPOPT takes the same path; ``Problem.solve`` uses it by default.  The
+Jacobian's column blocks are seeded differently from CasADi's whole Jacobian and agree
+only to round-off (5e-18 on GA-2P), which is enough to move the TTW's sensitive path to
+another optimum (``results/benchmark.md``), so the solve keeps CasADi's own; the two-part
+Jacobian is here, tested, for problems whose path is not so sensitive.  CPU time grows a
+little: each part evaluates the nominal graph it needs.
 
 Rule for symmetric parts: a part that computes whole rows of the Hessian keeps an entry
 ``(r, c)`` (in solver order) with ``r <= c`` when its mirror is computed as a row too,

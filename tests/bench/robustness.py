@@ -2,7 +2,7 @@
 
     python tests/bench/robustness.py [--starts 20] [--seed 2026] [--spread 0.15] [--problem ga2p]
                                      [--from-baseline RUN_FOLDER]
-                                     [--factor F] [--first K] [--out PATH]
+                                     [--factor F] [--first K] [--out PATH] [--timeout S]
 
 Each start draws every design variable (every element of the twist vector) uniformly
 within +-spread of its baseline value (fixed seed; clipped to the bounds), then runs
@@ -11,12 +11,19 @@ the documented two-stage continuation: the mission analysis with that design fro
 warm-started from it.  Reports how many converge and the spread of the optimized
 energy and design; writes results/robustness/<problem>.md (and .json: every start's
 drawn and optimized design).  Not collected by pytest.
+
+Each start runs in its own process (this script with ``--one K``), so that a start whose
+IPOPT iteration does not end (one was seen spending 26 minutes inside the linear solver,
+where no signal handler runs) can be killed after ``--timeout S`` seconds and recorded as
+stopped, and the study goes on.  Every start's IPOPT logs (analysis and optimization) and
+its output are kept in ``<report>_logs/start_K/`` (not committed).
 """
 from __future__ import annotations
 
 import argparse
 import json
 import statistics
+import subprocess
 import sys
 import tempfile
 import time
@@ -40,7 +47,7 @@ def _draw(probe, rng, spread, factor=None):
     return start
 
 
-def _optimize(module, warm, start=None):
+def _optimize(module, warm, start=None, logs=None):
     """Stage 2 as ``mdo run``: the monotone barrier from the baseline, the adaptive barrier
     if that does not converge (``mdo.nlp.run.optimize_from_baseline``, shared with the CLI)."""
     op = module.build(analysis=False)
@@ -50,10 +57,14 @@ def _optimize(module, warm, start=None):
         for k, val in (start or {}).items():
             op.set_initial(k, val)
 
-    return optimize_from_baseline(op, from_start, lambda adaptive: op.solve(verbose=False))
+    def solve(adaptive):
+        log = None if logs is None else logs / f"optimization{'_adaptive' if adaptive else ''}.log"
+        return op.solve(verbose=False, log_path=log)
+
+    return optimize_from_baseline(op, from_start, solve)
 
 
-def one_start(module, rng, spread, from_baseline=None, factor=None):
+def one_start(module, rng, spread, from_baseline=None, factor=None, logs=None):
     """One start: the analysis at the drawn design, then the optimization from it; or, with
     ``from_baseline`` (a converged baseline's run folder), the optimization started from
     that baseline's mission with the drawn design (for problems whose baseline needs a
@@ -63,16 +74,16 @@ def one_start(module, rng, spread, from_baseline=None, factor=None):
     t0 = time.perf_counter()
     if from_baseline is not None:
         s_an = None
-        s = _optimize(module, Path(from_baseline) / "solution.json", start)
+        s = _optimize(module, Path(from_baseline) / "solution.json", start, logs)
     else:
         an = module.build(analysis=True)
         for k, val in start.items():
             an.set_initial(k, val)
         an.freeze_design()
-        s_an = an.solve(verbose=False)
+        s_an = an.solve(verbose=False, log_path=None if logs is None else logs / "analysis.log")
         with tempfile.TemporaryDirectory() as tmp:
             s_an.save(tmp)
-            s = _optimize(module, Path(tmp) / "solution.json")
+            s = _optimize(module, Path(tmp) / "solution.json", logs=logs)
     wall = time.perf_counter() - t0
     design = {v["name"]: v["value"] for v in s.variables if v["design"]}
     return start, s_an, s, design, wall
@@ -93,7 +104,8 @@ def _write_report(args, rows) -> list:
                 "two-stage continuation per start (mission analysis at the drawn design, then the optimization "
                 "warm-started from it)")
              + "; the monotone barrier first, the adaptive barrier if it does not converge, as `mdo run`.  "
-             f"Produced by `python tests/bench/robustness.py {' '.join(sys.argv[1:])}`.", "",
+             f"Produced by `python tests/bench/robustness.py {' '.join(sys.argv[1:])}` (each start in its own "
+             "process" + (f", killed after {args.timeout:g} s" if args.timeout else "") + ").", "",
              f"**{len(ok)} of {len(rows)} converged** (IPOPT Solve_Succeeded)."]
     if len(ok):
         spread_pct = 100 * (es.max() - es.min()) / es.min()
@@ -114,7 +126,7 @@ def _write_report(args, rows) -> list:
         lines.append(f"| {r[0]} | {r[1]} | {r[2]} | {r[3]} | {r[4]} | {r[5]:.4f} | {r[6]:.0f} |")
     out = Path(args.out) if args.out else \
         ROOT / "results" / "robustness" / (f"{args.problem}" + (f"_x{args.factor:g}" if args.factor else "") + ".md")
-    out.parent.mkdir(exist_ok=True)
+    out.parent.mkdir(parents=True, exist_ok=True)
     out.write_text("\n".join(lines) + "\n")
     # every start's drawn and optimized design, so that distinct optima can be compared later
     per_start = [{"start": r[0], "analysis_status": r[1], "optimization_status": r[3], "iterations": r[4],
@@ -123,6 +135,52 @@ def _write_report(args, rows) -> list:
                   "optimized": {k: np.asarray(v, float).tolist() for k, v in r[7].items()}} for r in rows]
     out.with_suffix(".json").write_text(json.dumps(per_start, indent=1) + "\n")
     return lines
+
+def _row_of(i, s_an, s, design, wall, start) -> list:
+    e = s.summary_values().get("battery_energy_kWh", float("nan"))
+    an_status, an_it = (s_an.status, s_an.iterations) if s_an is not None else ("(baseline's mission)", 0)
+    fb = s.barrier.get("fallback_from")
+    it = f"{fb['iterations']} monotone + {s.iterations} adaptive" if fb else str(s.iterations)
+    return [i, an_status, an_it, s.status, it, e, wall,
+            {k: np.asarray(v, float).tolist() for k, v in design.items()},
+            {k: np.asarray(v, float).tolist() for k, v in start.items()}]
+
+
+def _run_one(args, module, k: int) -> list:
+    """``--one K``: start K of the seed (the first K draws discarded) in this process."""
+    rng = np.random.default_rng(args.seed)
+    probe = module.build(analysis=True)
+    for _ in range(k):
+        _draw(probe, rng, args.spread, args.factor)
+    del probe
+    logs = Path(args.logs) if args.logs else None
+    if logs is not None:
+        logs.mkdir(parents=True, exist_ok=True)
+    start, s_an, s, design, wall = one_start(module, rng, args.spread, args.from_baseline, args.factor, logs)
+    return _row_of(k, s_an, s, design, wall, start)
+
+
+def _spawn(args, k: int, logs: Path) -> list:
+    """Start K in a child process with the study's budget; a row whatever happens."""
+    logs.mkdir(parents=True, exist_ok=True)
+    row_file = logs / "row.json"
+    row_file.unlink(missing_ok=True)
+    cmd = [sys.executable, __file__, "--problem", args.problem, "--seed", str(args.seed),
+           "--spread", str(args.spread), "--one", str(k), "--logs", str(logs)]
+    cmd += ["--factor", str(args.factor)] if args.factor else []
+    cmd += ["--from-baseline", str(args.from_baseline)] if args.from_baseline else []
+    t0 = time.perf_counter()
+    with open(logs / "output.txt", "w") as out:
+        try:
+            code = subprocess.run(cmd, stdout=out, stderr=subprocess.STDOUT, timeout=args.timeout).returncode
+        except subprocess.TimeoutExpired:   # subprocess.run kills the child (SIGKILL)
+            code = None
+    wall = time.perf_counter() - t0
+    if code == 0 and row_file.exists():
+        return json.loads(row_file.read_text())
+    why = f"stopped after {args.timeout:g} s (--timeout)" if code is None else f"crashed (exit {code})"
+    return [k, "-", 0, why, "-", float("nan"), wall, {}, {}]
+
 
 def main():
     ap = argparse.ArgumentParser()
@@ -137,26 +195,30 @@ def main():
     ap.add_argument("--out", default=None, help="the report's path (default results/robustness/<problem>.md)")
     ap.add_argument("--from-baseline", default=None,
                     help="a converged baseline run folder: start each optimization from its mission")
+    ap.add_argument("--timeout", type=float, default=None,
+                    help="wall-time budget of each start in seconds: a start still going is killed and "
+                         "recorded as stopped")
+    ap.add_argument("--one", type=int, default=None, help=argparse.SUPPRESS)    # the child's start
+    ap.add_argument("--logs", default=None, help=argparse.SUPPRESS)
     args = ap.parse_args()
+    if args.timeout is not None and not args.timeout > 0:
+        ap.error(f"--timeout: must be > 0 seconds, got {args.timeout:g}")
     module = _import_file(ROOT / "problems" / f"{args.problem}.py")
-    rng = np.random.default_rng(args.seed)
+    if args.one is not None:
+        row = _run_one(args, module, args.one)
+        (Path(args.logs) / "row.json").write_text(json.dumps(row) + "\n")
+        return
     if args.factor:
         args.starts = 1
+    report = Path(args.out) if args.out else \
+        ROOT / "results" / "robustness" / (f"{args.problem}" + (f"_x{args.factor:g}" if args.factor else "") + ".md")
+    logs_root = report.with_name(report.stem + "_logs")
     rows = []
-    if args.first:   # the same draws as a study from start 0: discard the first K
-        probe = module.build(analysis=True)
-        for _ in range(args.first):
-            _draw(probe, rng, args.spread, args.factor)
-        del probe
     for i in range(args.first, args.first + args.starts):
-        start, s_an, s, design, wall = one_start(module, rng, args.spread, args.from_baseline, args.factor)
-        e = s.summary_values().get("battery_energy_kWh", float("nan"))
-        an_status, an_it = (s_an.status, s_an.iterations) if s_an is not None else ("(baseline's mission)", 0)
-        fb = s.barrier.get("fallback_from")
-        it = f"{fb['iterations']} monotone + {s.iterations} adaptive" if fb else str(s.iterations)
-        rows.append((i, an_status, an_it, s.status, it, e, wall, design, start))
-        print(f"start {i:2d}: analysis {an_status} ({an_it} it), optimization {s.status} "
-              f"({it} it), {e:.4f} kWh, {wall:.0f} s", flush=True)
+        r = _spawn(args, i, logs_root / f"start_{i}")
+        rows.append(r)
+        print(f"start {i:2d}: analysis {r[1]} ({r[2]} it), optimization {r[3]} "
+              f"({r[4]} it), {r[5]:.4f} kWh, {r[6]:.0f} s", flush=True)
         lines = _write_report(args, rows)   # after every start: a stopped study keeps what it has
     print("\n".join(lines[:8]))
 
