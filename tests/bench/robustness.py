@@ -179,6 +179,8 @@ def _spawn(args, k: int, logs: Path) -> list:
     if code == 0 and row_file.exists():
         return json.loads(row_file.read_text())
     why = f"stopped after {args.timeout:g} s (--timeout)" if code is None else f"crashed (exit {code})"
+    if not any(logs.glob("optimization*.log")) and not args.from_baseline:   # it never left the analysis
+        return [k, why, 0, "(not started)", "-", float("nan"), wall, {}, {}]
     return [k, "-", 0, why, "-", float("nan"), wall, {}, {}]
 
 
