@@ -162,3 +162,21 @@ def test_carpet_and_line_plots_from_a_table(tmp_path):
         line_plot(tmp_path, "cells", "mass")
     with pytest.raises(InputError, match="not a grid key"):
         carpet_plot(tmp_path, "distance", "speed")
+
+
+# ---------------------------------------------------------------- threads per point
+@pytest.mark.parametrize("argv, expected", [
+    (["--workers", "0"], None),                   # serial: mdo run's own default
+    (["--workers", "2"], "1"),                    # one core per Dask worker
+    (["--workers", "2", "--threads", "2"], "2"),  # the user's choice wins
+])
+def test_points_on_dask_workers_use_one_thread(tmp_path, monkeypatch, argv, expected):
+    import mdo.sweep.cli as sweep_cli
+    import mdo.sweep.runner as runner
+    seen = {}
+    monkeypatch.setattr(runner, "connect", lambda *a, **k: None)   # no cluster for this check
+    monkeypatch.setattr(sweep_cli, "_run", lambda args, grid, points, out, fixed, run_args, client:
+                        seen.setdefault("run_args", list(run_args)) and 0)
+    main(["sweep", str(BRACH), "--out", str(tmp_path / "sw"), "--grid", "final_y=4.0", *argv])
+    ra = seen["run_args"]
+    assert (ra[ra.index("--threads") + 1] if "--threads" in ra else None) == expected

@@ -9,7 +9,8 @@ from dataclasses import dataclass
 
 from ..core.signals import SignalInterrupt
 
-__all__ = ["DivergenceWatch", "HESSIAN_CHOICES", "default_threads", "INTERRUPT_STATUS", "CRASH_ON_EXIT_STATUS", "FRAGILE", "FROM_BASELINE_OPTIONS",
+__all__ = ["DivergenceWatch", "HESSIAN_CHOICES", "check_threads", "default_threads", "INTERRUPT_STATUS",
+           "CRASH_ON_EXIT_STATUS", "FRAGILE", "FROM_BASELINE_OPTIONS",
            "WARM_START_OPTIONS"]
 
 #: ``Problem.solve(hessian=...)``: exact (split by structure), exact (one colouring), quasi-Newton

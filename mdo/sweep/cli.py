@@ -44,8 +44,8 @@ def register(sub):
     p.add_argument("--max-iter", type=int, help="IPOPT iteration limit of every point")
     p.add_argument("--hessian", choices=("exact", "full", "limited-memory"), help="as `mdo run --hessian`")
     p.add_argument("--threads", type=int, choices=(1, 2),
-                   help="as `mdo run --threads` (the Hessian's threads) for every point (default: 1 when the points run in parallel "
-                        "on Dask workers, one core each; mdo run's default with --workers 0)")
+                   help="as `mdo run --threads` (the Hessian's threads) for every point (default: 1 when the "
+                        "points run in parallel on Dask workers, one core each; mdo run's default with --workers 0)")
     p.add_argument("--point-timeout", type=float, metavar="S",
                    help="wall-time budget of each point in seconds: a run still going then is killed and the "
                         "point recorded as stopped (its log kept), and the sweep goes on")
