@@ -5,32 +5,16 @@ import casadi as ca
 import numpy as np
 import pytest
 
-from mdo.core import Collocation, InputError
-from mdo.nlp import Problem
+from mdo.core import InputError
 from mdo.nlp.hessian import _positions, constraint_jacobian_function, general_rows, lagrangian_hessian_functions
 from mdo.nlp.ipopt import check_threads, default_threads
+from test_hessian_split import _frozen_problem
 
-G = 9.80665
 
-
-def _problem(nodes=14, freeze=False):
-    """A brachistochrone with two globals (duration; end height, a design variable) and
-    simple rows the solver turns into bounds."""
-    p = Problem("brachistochrone_threads")
-    c = Collocation(nodes)
-    D = ca.DM(c.D).T
-    tf = p.variable("final_time", unit="s", lower=0.1, upper=10.0, init=2.0)
-    yf = p.variable("end_height", unit="m", lower=1.0, upper=9.0, init=5.0, design=True)
-    x = p.variable("x", (1, nodes), scale=10.0, lower=0, upper=10, init=10 * c.s)
-    y = p.variable("y", (1, nodes), scale=10.0, lower=0, upper=10, init=10 - 5 * c.s)
-    v = p.variable("v", (1, nodes), scale=10.0, lower=0, upper=100, init=9.9 * c.s)
-    th = p.variable("theta", (1, nodes), lower=0.0, upper=np.pi, init=np.full(nodes, 1.5))
-    p.constrain("x dynamics", ca.mtimes(x, D) - tf * v * ca.sin(th), scale=10.0)
-    p.constrain("y dynamics", ca.mtimes(y, D) + tf * v * ca.cos(th), scale=10.0)
-    p.constrain("v dynamics", ca.mtimes(v, D) - tf * G * ca.cos(th), scale=10.0)
-    p.constrain("start", ca.vertcat(x[0], y[0] - 10.0, v[0]))
-    p.constrain("end", ca.vertcat(x[-1] - 10.0, y[-1] - yf * ca.cos(0.1 * tf)))
-    p.minimize(tf + 0.01 * yf * yf * tf, unit="s")
+def _problem(freeze=False):
+    """test_hessian_split's brachistochrone with two globals (duration; end height, a design
+    variable) and simple rows the solver turns into bounds; the analysis freezes the design."""
+    p = _frozen_problem(nodes=14)
     if freeze:
         p.freeze_design()
     return p

@@ -75,7 +75,7 @@ def general_rows(x, p, g) -> np.ndarray:
 
 
 def lagrangian_hessian_functions(problem, kind: str = "split", *, simple_bounds: bool = True,
-                                 skip_fixed: bool = True, threads: int = 1, rows=None) -> ca.Function:
+                                 skip_fixed: bool = True, threads: int = 1) -> ca.Function:
     """``nlp_hess_l(x, p, lam_f, lam_g) -> triu(H)`` of ``problem``'s Opti.
 
     ``kind``: ``"full"`` (CasADi's own, one colouring of x) or ``"split"`` (module
@@ -85,14 +85,13 @@ def lagrangian_hessian_functions(problem, kind: str = "split", *, simple_bounds:
     IPOPT as the ``hess_lag`` plugin option.  ``skip_fixed``: leave out the rows of frozen
     global variables (module docstring; only right while IPOPT removes fixed variables).
     ``threads=2``: the split's two parts, the node block and the global rows, each in its own
-    thread (:mod:`mdo.nlp.threads`; the same matrix).  ``rows``: :func:`general_rows`, if the
-    caller has them."""
+    thread (:mod:`mdo.nlp.threads`; the same matrix)."""
     if kind not in HESSIAN_KINDS:
         raise InputError("hessian", f"one of {', '.join(HESSIAN_KINDS)}, got {kind!r}")
     opti = problem.opti
     x, g, f, p = opti.x, opti.g, opti.f, opti.p
     if simple_bounds:
-        g = g[[int(i) for i in (general_rows(x, p, g) if rows is None else rows)]]
+        g = g[[int(i) for i in general_rows(x, p, g)]]
     lam_f, lam_g = ca.MX.sym("lam_f"), ca.MX.sym("lam_g", g.numel())
     L = lam_f * f + (ca.dot(lam_g, g) if g.numel() else 0)
     glob = {v.name for v in global_variables(problem)}
@@ -151,18 +150,18 @@ def _two_thread_hessian(x, p, lam_f, lam_g, L, Y, D, node_vars, glob_vars, pos) 
 
 
 def constraint_jacobian_function(problem, *, simple_bounds: bool = True, threads: int = 1,
-                                 skip_fixed: bool = True, rows=None) -> ca.Function:
+                                 skip_fixed: bool = True) -> ca.Function:
     """``nlp_jac_g(x, p) -> (g, jac_g_x)`` of ``problem``'s Opti.  With ``threads=2`` its node
     columns (the global variables held fixed, as for the Hessian's node block) and its
     global columns each in their own thread (:mod:`mdo.nlp.threads`; the same matrix).  With
     ``skip_fixed`` a frozen global's columns are zeros, not computed, in one thread or two (an
     analysis: GA-2P 0.24 -> 0.18 s per call).  Give the result to IPOPT as the ``jac_g``
-    plugin option (``simple_bounds``, ``skip_fixed`` and ``rows`` as for
+    plugin option (``simple_bounds`` and ``skip_fixed`` as for
     :func:`lagrangian_hessian_functions`)."""
     opti = problem.opti
     x, g, p = opti.x, opti.g, opti.p
     if simple_bounds:
-        g = g[[int(i) for i in (general_rows(x, p, g) if rows is None else rows)]]
+        g = g[[int(i) for i in general_rows(x, p, g)]]
     m = g.numel()
     glob = [v for v in global_variables(problem) if not (skip_fixed and v.frozen)]
     frozen = len(glob) < len(global_variables(problem))

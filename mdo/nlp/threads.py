@@ -28,7 +28,7 @@ from __future__ import annotations
 import casadi as ca
 import numpy as np
 
-__all__ = ["half_by_nonzeros", "nonzero_index", "scatter", "two_thread_sum", "upper_entries"]
+__all__ = ["nonzero_index", "scatter", "two_thread_sum", "upper_entries"]
 
 
 def upper_entries(block: ca.MX, row_index, col_index, mirror_in_rows) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -47,12 +47,6 @@ def upper_entries(block: ca.MX, row_index, col_index, mirror_in_rows) -> tuple[n
     sel = np.flatnonzero(keep)
     lo, hi = np.minimum(r[sel], c[sel]), np.maximum(r[sel], c[sel])
     return sel, lo, hi
-
-
-def half_by_nonzeros(sparsity: ca.Sparsity) -> int:
-    """The row that splits ``sparsity``'s nonzeros in two about equal halves."""
-    counts = np.bincount(np.asarray(sparsity.get_triplet()[0], int), minlength=sparsity.size1())
-    return int(np.searchsorted(np.cumsum(counts), counts.sum() / 2.0))
 
 
 def two_thread_sum(name: str, inputs: list, parts: list, length: int) -> list:
