@@ -38,6 +38,24 @@ def test_inverse_polar_rises_beyond_stall_and_is_smooth():
     assert np.all(np.abs(d2) < 2e-3)        # no kinks (step 0.01 in cl)
 
 
+def test_section_cd_continues_past_its_table():
+    """Beyond the table's cl range (a tilt-wing strip on a slipstream edge's small dynamic
+    pressure) the drag keeps rising, joined with value, slope and curvature: a casadi
+    B-spline itself drops to zero there (it did, a 0.9 jump in cd)."""
+    cls = np.concatenate([np.linspace(-4.0, -1.0, 301), np.linspace(2.2, 5.0, 281)])
+    for re in (2e4, 3e5, 6e6):
+        cd = section_cd("naca4412", cls, np.full_like(cls, re))
+        assert np.all(cd > 0.1 * cd.min()) and cd[0] > 1.0 and cd[-1] > 1.0
+        for part in (cd[:301], cd[301:]):
+            assert np.all(np.abs(np.diff(part, 2)) < 1e-3), re    # 0.01 steps: curvature < 10
+    c = ca.MX.sym("c")
+    y = section_cd("naca4412", c, 3e5)
+    f = ca.Function("f", [c], [y, ca.jacobian(y, c), ca.hessian(y, c)[0]])
+    for end in (-1.2, 2.4):
+        a, b = (np.array([float(v) for v in f(end + d)]) for d in (-1e-7, 1e-7))
+        assert np.allclose(a, b, rtol=1e-5, atol=1e-5), (end, a, b)
+
+
 def test_symbolic_section_cd_matches_numeric():
     cl = ca.MX.sym("cl", 3)
     re = ca.MX.sym("re", 3)

@@ -233,6 +233,20 @@ def test_hover_tilted_wing_in_slipstream():
     assert np.all(np.isfinite(F)) and abs(F[0]) > 10 * abs(F[2]) and abs(F[0]) > 100.0
 
 
+def test_strip_cl_continuous_through_normal_flow():
+    """A strip's section lift is the force normal to the freestream in the strip's section
+    plane: it integrates to the wing's lift at any angle, 90 deg to the flow included (a
+    tilt-wing's transition), where it used to fall to zero and flip its sign."""
+    wing = trapezoid("w", 9.6, 1.13, 1.0, dihedral=D(5.0), nspan=8, nchord=2, airfoil=None)
+    v = VLM([wing], S_ref=10.8)
+    c, w = (np.array(v.geometry[k]).ravel() for k in ("strip_chord", "strip_width"))
+    a = np.radians([4.0, 60.0, 85.0, 89.9, 90.0, 90.1, 95.0, 120.0])
+    r = v.solve(a, 10.0)
+    q = 0.5 * 1.225 * 10.0 ** 2
+    lift_strips = 2 * q * (c * w) @ np.array(r["cl"])       # both halves
+    assert np.allclose(lift_strips, np.array(r["L"]).ravel(), rtol=0.01), (lift_strips, r["L"])
+
+
 def test_strip_outputs_and_geometry_for_the_wake():
     v = VLM([_ga()], S_ref=14.76)
     g = v.geometry

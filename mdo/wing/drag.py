@@ -108,12 +108,54 @@ def _column(cl_b, cd_b):
 
 @functools.lru_cache(maxsize=None)
 def section_drag_table(airfoil: str) -> ca.Function:
-    """``cd(cl, ln Re)`` of airfoil ``airfoil`` as a casadi B-spline Function (see module doc)."""
+    """``cd(cl, ln Re)`` of airfoil ``airfoil`` as a casadi B-spline Function (see module doc).
+    Valid on ``CL_GRID``'s range only: a casadi B-spline is zero beyond its grid
+    (:func:`section_cd` continues it)."""
     from ..airfoil import Airfoil   # the airfoil discipline (issue 3)
     af = Airfoil.from_name(airfoil)
     table = np.column_stack([_column(*_attached_branch(af, re)) for re in RE_GRID])
     return ca.interpolant(f"cd_of_cl_{af.key}", "bspline", [CL_GRID, np.log(RE_GRID)],
                           table.ravel(order="F"))
+
+
+@functools.lru_cache(maxsize=None)
+def _table_ends(airfoil: str) -> ca.Function:
+    """ln Re -> the table's d cd/d cl and d2 cd/d cl2 at the low and the high end of
+    ``CL_GRID`` (4 outputs stacked).  Along an end the tensor B-spline is a cubic spline in
+    ln Re on ``RE_GRID``'s knots, so the same interpolant through its values there is exact."""
+    f = section_drag_table(airfoil)
+    c, r = ca.MX.sym("cl"), ca.MX.sym("ln_re")
+    y = f(ca.vertcat(c, r))
+    d1 = ca.jacobian(y, c)
+    d = ca.Function("d", [c, r], [d1, ca.jacobian(d1, c)])
+    rows = []
+    for lre in np.log(RE_GRID):
+        lo, hi = (d(float(e), lre) for e in (CL_GRID[0], CL_GRID[-1]))
+        rows.append([float(lo[0]), float(lo[1]), float(hi[0]), float(hi[1])])
+    return ca.interpolant(f.name().replace("cd_of_cl", "cd_ends"), "bspline", [np.log(RE_GRID)], np.array(rows).ravel())
+
+
+def _continued_cd(f, ends, cl, lre, lib):
+    """The table beyond its ``cl`` range, C2 at each end (a casadi B-spline is zero past its
+    grid, so a strip beyond ``CL_GRID`` - a tilt-wing's strip in hover, on the small local
+    dynamic pressure of a slipstream edge - had no profile drag, with a jump to it):
+
+        cd(end + x) = cd_e + s_e x + d2_e x^2/2 + (2 k - d2_e)/2 x^3/(x + w),   x = |cl - end|
+
+    (``s_e`` the table's slope at the end, ``cd_e`` its value there), which joins the table with its value, slope
+    and curvature and grows as the module's stall continuation ``k x^2`` (k =
+    ``STALL_CURVATURE``) once x >> w = one grid step.  Inside the range ``cl`` reaches the
+    table unchanged (the clamps below are exactly the identity there)."""
+    lo, hi = float(CL_GRID[0]), float(CL_GRID[-1])
+    w, k = float(CL_GRID[1] - CL_GRID[0]), STALL_CURVATURE
+    x_hi = lib.fmax(cl - hi, 0.0) if lib is ca else np.maximum(cl - hi, 0.0)
+    x_lo = lib.fmax(lo - cl, 0.0) if lib is ca else np.maximum(lo - cl, 0.0)
+    c_in = ca.fmin(ca.fmax(cl, lo), hi) if lib is ca else np.minimum(np.maximum(cl, lo), hi)   # ends exactly
+    cd = f(c_in, lre)
+    e = ends(lre)            # 4 x n: slope and curvature at the low end, then at the high end
+    for x, s_e, d2_e, sgn in ((x_lo, e[0, :], e[1, :], -1.0), (x_hi, e[2, :], e[3, :], 1.0)):
+        cd = cd + sgn * s_e * x + 0.5 * d2_e * x * x + 0.5 * (2.0 * k - d2_e) * x ** 3 / (x + w)
+    return cd
 
 
 def _has_polar(airfoil) -> bool:
@@ -138,7 +180,7 @@ def section_cd(airfoil, cl, reynolds, mach=0.0, thickness_to_chord=0.12):
         m = _smooth_mach(mach)
         return skin_friction(re_s, m) * form_factor_wing(thickness_to_chord, 0.3, m) * \
             (1.977 + 0.52 * thickness_to_chord)
-    f = section_drag_table(airfoil)
+    f, ends = section_drag_table(airfoil), _table_ends(airfoil)
     if isinstance(cl, (ca.MX, ca.SX)) or isinstance(reynolds, (ca.MX, ca.SX)):
         kind = ca.MX if ca.MX in (type(cl), type(reynolds)) else ca.SX
         cl_ = cl if isinstance(cl, kind) else kind(ca.DM(np.asarray(cl, dtype=float)))
@@ -147,12 +189,16 @@ def section_cd(airfoil, cl, reynolds, mach=0.0, thickness_to_chord=0.12):
         shape = cl_.shape if cl_.numel() == n else lre.shape
         c = ca.vec(cl_) if cl_.numel() == n else ca.repmat(cl_, n, 1)
         r = ca.vec(lre) if lre.numel() == n else ca.repmat(lre, n, 1)
-        out = f.map(n)(ca.vertcat(c.T, r.T)) if n > 1 else f(ca.vertcat(c, r))
+        fm, em = (f.map(n), ends.map(n)) if n > 1 else (f, ends)
+        out = _continued_cd(lambda cc, rr: fm(ca.vertcat(cc, rr)), lambda rr: em(rr), c.T, r.T, ca)
         return ca.reshape(out, *shape)
     cl_a = np.asarray(cl, dtype=float)
     re_a = np.broadcast_to(np.log(np.asarray(re_s, dtype=float)), cl_a.shape)
-    pts = np.vstack([cl_a.ravel(), re_a.ravel()])
-    out = np.array(f.map(pts.shape[1])(pts)).reshape(cl_a.shape)
+    m = cl_a.size
+    fm, em = f.map(m), ends.map(m)
+    out = _continued_cd(lambda cc, rr: np.array(fm(np.vstack([cc, rr]))).ravel(),
+                        lambda rr: np.array(em(rr.reshape(1, -1))).reshape(4, -1), cl_a.ravel(), re_a.ravel(), np)
+    out = np.asarray(out).reshape(cl_a.shape)
     return float(out) if out.shape == () else out
 
 

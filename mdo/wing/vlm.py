@@ -421,17 +421,20 @@ class VLM(LatticeAssemblyMixin):
         }
         AR = b * b / S
         out["e"] = out["CL"] ** 2 / (math.pi * AR * out["CDi"])
-        # strips: lift per unit span in the strip's own plane normal to the freestream
+        # strips: section lift per unit span, the force normal to the freestream in the strip's
+        # section plane (normal to its span axis s = n x x_body): along e = x_w x s, which is n at
+        # zero incidence.  Not n minus its freestream component: that vanishes, and flips, when the
+        # strip stands normal to the flow (a tilt-wing's transition past 90 deg), where its cl
+        # had a kink and a 1/cos(alpha) derivative.
         Fs = [ca.mtimes(self.strip_sum, Fi) for Fi in (Fx, Fy, Fz)]
         ns = g["strip_normal"]
-        nsx, nsy, nsz = (ns[i, :].T for i in range(3))
+        nsy, nsz = (ns[i, :].T for i in (1, 2))
         ones_S = ca.DM.ones(self.n_strips, 1)
-        ndotx = _cs(nsx, ca.mtimes(ones_S, xw[0])) + _cs(nsy, ca.mtimes(ones_S, xw[1])) + \
-            _cs(nsz, ca.mtimes(ones_S, xw[2]))
-        ex = _cs(nsx, ones_S @ ca.DM.ones(1, Kn)) - ndotx * ca.mtimes(ones_S, xw[0])
-        ey = _cs(nsy, ones_S @ ca.DM.ones(1, Kn)) - ndotx * ca.mtimes(ones_S, xw[1])
-        ez = _cs(nsz, ones_S @ ca.DM.ones(1, Kn)) - ndotx * ca.mtimes(ones_S, xw[2])
-        enorm = ca.sqrt(ex * ex + ey * ey + ez * ez)
+        xs = [ca.mtimes(ones_S, xw[i]) for i in range(3)]
+        ex = -_cs(nsy, xs[1]) - _cs(nsz, xs[2])     # s = (0, n_z, -n_y): the strips' normals lie in y-z
+        ey = _cs(nsy, xs[0])
+        ez = _cs(nsz, xs[0])
+        enorm = ca.sqrt(ex * ex + ey * ey + ez * ez)   # sqrt(1 - (x_w . s)^2) >= cos(dihedral)
         lift_s = (Fs[0] * ex + Fs[1] * ey + Fs[2] * ez) / enorm
         cw = (g["strip_chord"] * g["strip_width"]).T
         qcw = _rs(ca.mtimes(cw, ca.DM.ones(1, Kn)), q)
