@@ -449,8 +449,10 @@ class Bus:
                 "loss_power_W": (u_pack - v_pack) * ib, "power_balance_W": v_pack * ib - p_bus,
                 "soc_rate_per_s": pk.cell.soc_rate(i_cell, pk.temperature_C)}
 
-    def analyze(self, torques, omegas, soc) -> dict:
-        """Numbers: explicit motors, bracketed pack current (Eq. N1); adds ``battery_current_A``."""
+    def analyze(self, torques, omegas, soc, *, within_pack: bool = False) -> dict:
+        """Numbers: explicit motors, bracketed pack current (Eq. N1); adds ``battery_current_A``.
+        ``within_pack``: a bus power above the pack's maximum draws the maximum-power current
+        instead of raising (an initial guess, which the NLP then corrects)."""
         s = np.atleast_1d(np.asarray(soc, float))
         v_bus = None
         for _ in range(3):   # an inverter's loss depends on the bus voltage, which the current sets
@@ -459,6 +461,8 @@ class Bus:
                 p_bus = p_bus + g.n_motors * np.asarray(self.motor_outputs(g, np.asarray(q, float),
                                                                            np.asarray(w, float), v_bus)["esc_power_in_W"])
             p_bus, s = np.broadcast_arrays(np.atleast_1d(p_bus), s)
+            if within_pack:
+                p_bus = np.minimum(p_bus, self.pack.max_power_W(s)[0])
             ib = np.atleast_1d(self.pack.current_for_power(p_bus, s))
             if not any(g.inverter is not None for g in self.groups):
                 break

@@ -149,7 +149,9 @@ def _rotor_guesses(ac, nodes, theta, alpha, vectored, need_t, need_n, V, h, wma,
         torques.append(np.where(acts[gm.name], Q1, 0.0))
         omegas.append(omega)
     soc = np.asarray(nodes.states.get("state_of_charge", np.ones(K)), float).ravel() * np.ones(K)
-    po = ac.config.bus().analyze(torques, omegas, np.clip(soc, 0.05, 1.0))
+    # a node whose guessed drag needs more than the pack can give (a slow node guessed without
+    # the slipstreams' lift, its strips past stall) starts at the pack's maximum power
+    po = ac.config.bus().analyze(torques, omegas, np.clip(soc, 0.05, 1.0), within_pack=True)
     out["battery_current_A"] = np.asarray(po["battery_current_A"], float).ravel()
     return out
 
