@@ -434,7 +434,7 @@ class VLM(LatticeAssemblyMixin):
         ex = -_cs(nsy, xs[1]) - _cs(nsz, xs[2])     # s = (0, n_z, -n_y): the strips' normals lie in y-z
         ey = _cs(nsy, xs[0])
         ez = _cs(nsz, xs[0])
-        enorm = ca.sqrt(ex * ex + ey * ey + ez * ez)   # sqrt(1 - (x_w . s)^2) >= cos(dihedral)
+        enorm = ca.sqrt(ex * ex + ey * ey + ez * ez)   # |x_w x s| >= cos(dihedral) without sideslip
         lift_s = (Fs[0] * ex + Fs[1] * ey + Fs[2] * ez) / enorm
         cw = (g["strip_chord"] * g["strip_width"]).T
         qcw = _rs(ca.mtimes(cw, ca.DM.ones(1, Kn)), q)
