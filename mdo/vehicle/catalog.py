@@ -58,14 +58,20 @@ GA_WING_AIRFOIL = "NACA_63_412" + TRIPPED
 TAIL_AIRFOIL = "NACA_0015" + TRIPPED
 PROP_AIRFOIL = "NACA_4412" + TRIPPED
 
-# Mass calibration (see mass.py): one factor on all structure, systems and propulsion
-# hardware terms (not battery, not payload).  1.16 brings the GA-2P build-up to Table 1's
-# 3549 lb (the raw regressions give 3250 lb); the same factor then *predicts* GA-8P's
-# 3622 lb to about 1 %.  The TTW's airframe in the paper is far lighter than GA
-# regressions give (raw 5997 lb vs 4850 lb), so it gets its own factor 0.70, of the
-# size of Raymer's composite-structure factors (Table 15.4) combined with lighter
-# eVTOL motors; it is a calibration, stated as such.
-GA_AIRFRAME_CALIBRATION = 1.16
+# Mass calibration (see mass.py): one factor on the regressions' structure, systems and
+# propulsion hardware terms (not battery, not payload, not the wings' bending material).
+# Issue 17 asks for a calibration only where a regression is known to be off.
+# - GA family: none (1.0).  The same regressions, uncalibrated, give the X-57 Mod IV (this
+#   fuselage, an electric P2006T) 1420 kg against NASA's "approximately 3000 lb" (1361 kg):
+#   +4.3 %, so nothing measured says they are off for this airframe.  Until 2026-12-06 the
+#   family carried 1.16, which brought GA-2P's build-up to the paper's Table 1 (3549 lb):
+#   a calibration to another model's output, not to an airframe.  `-o airframe_calibration=1.16`
+#   flies it (problems/reconcile.py reports the energy's sensitivity to it).
+# - TTW: 0.70.  The paper's airframe is far lighter than GA metal regressions give (raw 5997 lb
+#   vs 4850 lb); 0.70 is of the size of Raymer's composite-structure factors (Table 15.4)
+#   combined with lighter eVTOL motors.  It is a calibration to the paper's Table 1, stated as
+#   one: with 1.0 the baseline TTW cannot carry its packaged battery (results/ttw/README.md).
+GA_AIRFRAME_CALIBRATION = 1.0
 TTW_AIRFRAME_CALIBRATION = 0.70
 
 # Drag the GA airplanes may add on the base leg and final approach (gear down, partial
