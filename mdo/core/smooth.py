@@ -14,6 +14,7 @@ softplus(x, w)      w * log(1 + exp(x / w))                w * ln 2 (at x = 0)
 smooth_abs(x, w)    sqrt(x^2 + w^2)                        w (at x = 0), ~w^2/(2|x|) far
 smooth_max(a, b, w) (a + b + smooth_abs(a - b, w)) / 2     w / 2
 smooth_min(a, b, w) (a + b - smooth_abs(a - b, w)) / 2     w / 2
+soft_min(x, w)      -w log sum exp(-x_i / w) over a vector   below min by 0 ... w ln n
 sigmoid(x, w)       1 / (1 + exp(-x / w))                  0.5 (step), 0.12 at x = +-2w
 blend(x, x0, w,..)  (1 - s) f_lo + s f_hi, s = sigmoid     C-infinity weight
 ==================  =====================================  ===========================
@@ -31,6 +32,7 @@ __all__ = [
     "smooth_max",
     "smooth_min",
     "smooth_clip",
+    "soft_min",
     "sigmoid",
     "blend",
 ]
@@ -77,6 +79,21 @@ def smooth_max(a, b, width=1.0):
 def smooth_min(a, b, width=1.0):
     """``min(a, b)`` with the corner rounded over about ``width``; error <= w/2."""
     return 0.5 * (a + b - smooth_abs(a - b, width))
+
+
+def soft_min(x, width=1.0):
+    """Smallest entry of the column ``x`` (CasADi or NumPy): ``-w log sum exp(-x_i / w)``,
+    written about a pairwise smooth minimum (symbolic; within n w / 2 of the minimum) or the
+    minimum (numeric), an exact identity that keeps every exponent below n / 2; below the
+    minimum by at most ``w ln n``, and by ``w ln k`` where k entries tie at it."""
+    if is_symbolic(x):
+        m = x[0]
+        for i in range(1, x.shape[0]):
+            m = smooth_min(m, x[i], width)
+        return m - width * ca.log(ca.sum1(ca.exp(-(x - m) / width)))
+    a = np.asarray(x, float).ravel()
+    m = a.min()
+    return float(m - width * np.log(np.sum(np.exp(-(a - m) / width))))
 
 
 def smooth_clip(x, lower, upper, width=1.0):

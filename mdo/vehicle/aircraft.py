@@ -91,6 +91,7 @@ from .config import VehicleConfig, WingConfig
 from .engine_out import add_fin_design, engine_out_option
 from .mass import MassDesign, solve_togw, total_mass
 from .rotor_group import RotorGroupModel
+from .stall_pattern import add_stall_pattern
 from .viscous_wing import viscous_rows, viscous_unknowns, viscous_upwash
 
 __all__ = ["Aircraft", "DesignBounds"]
@@ -107,9 +108,11 @@ class DesignBounds:
     ``wing_structure=None``, grows with AR^0.6) and by ``Aircraft(max_span_m=...)`` when the
     user has a hangar or gate limit; the box 0.6-3.0 x the baseline span is far outside
     every committed optimum.  Taper by the
-    stall margin of the tip strips (cl_max falls with the tip chord's Reynolds number) -
-    the box 0.2-1.0 keeps the planform a trapezoid with a tip chord the lattice and the
-    section data can carry; a tilt-wing, whose wing never flies slowly, can sit on it.
+    stall pattern of a wing with ailerons (``mdo.vehicle.stall_pattern``: the aileron span
+    still attached at the stall onset, which low taper without washout loses) and the stall
+    margin of the tip strips (cl_max falls with the tip chord's Reynolds number) - the box
+    0.2-1.0 keeps the planform a trapezoid with a tip chord the lattice and the section data
+    can carry; a wing without an aileron span (the TTW's, as defined) can sit on it.
     Design speeds 0.05-2.0 x the baseline: the Adkins-Liebeck design is valid down to
     V = 0 (a hover design), so the box only keeps the variable's scale; the design cl of
     the blade sections by the design point's stall limit at each station's Reynolds
@@ -340,6 +343,7 @@ class Aircraft(AircraftGeometryMixin, AirframeDragMixin, WingTiltMixin):
         self._build_geometry(problem)
         if self.design_point_constraints:
             self._no_overlap(problem)
+        add_stall_pattern(self, problem)     # the ailerons fly at stall onset (holds taper)
         if self.trim_surfaces:
             add_balance(self, problem)
         self.bus = Bus(self.pack, [gm.motor_group(self.pack) for gm in self.groups],

@@ -118,6 +118,9 @@ TTW_MOTOR = dict(short_time_power_factor=1.2, short_time_segments=("VC", "VT", "
 # Table 12.2).  Segments set flap_deflection (0-1): see mdo.mission.profiles.ga_segments.
 GA_FLAP_SPAN_ETA = (0.09, 0.62)
 GA_FLAP_CLMAX_INCREMENT = 1.3
+# Its ailerons: from the flap's end to near the tip, read from the same three-view (an estimate,
+# stated).  They must still fly at the stall onset (mdo.vehicle.stall_pattern).
+GA_AILERON_SPAN_ETA = (0.62, 0.96)
 
 
 def design_rpm_for_tip_mach(radius_m, speed_mps, altitude_m, tip_mach=0.6) -> float:
@@ -139,7 +142,8 @@ def _ga_airframe():
     main = WingConfig("main_wing", span_m=11.4, area_m2=14.76, taper=0.70, section_eta=GA_SECTIONS,
                       twist_deg=(3.00, 2.75, 2.50, 2.25, 2.00), airfoil=GA_WING_AIRFOIL, role="main",
                       flap_span_eta=GA_FLAP_SPAN_ETA, flap_clmax_increment=GA_FLAP_CLMAX_INCREMENT,
-                      thickness_to_chord=0.12, root_le_x_m=2.93, root_z_m=1.01)
+                      aileron_span_eta=GA_AILERON_SPAN_ETA, thickness_to_chord=0.12, root_le_x_m=2.93,
+                      root_z_m=1.01)
     htail = WingConfig("horizontal_tail", span_m=3.3, area_m2=2.54, taper=1.0, section_eta=(0.0, 1.0),
                        twist_deg=(0.0, 0.0), airfoil=TAIL_AIRFOIL, thickness_to_chord=0.12,
                        root_le_x_m=7.7, root_z_m=0.25, role="horizontal_tail",

@@ -67,6 +67,8 @@ class WingConfig:
     tilting: bool = False          # TTW: the wing and its rotors tilt by the wing-mounted angle
     flap_span_eta: tuple = (0.0, 0.0)   # flapped part of the semispan (fractions), for the stall margin
     flap_clmax_increment: float = 0.0   # section cl_max gain of the fully deflected flap (mdo.vehicle.stall)
+    aileron_span_eta: tuple = (0.0, 0.0)  # ailerons' part of the semispan: kept unstalled at stall onset
+    #                                       (mdo.vehicle.stall_pattern); (0, 0): no ailerons, no check
     pivot_x_m: float | None = None  # tilt axis position (defaults to the quarter chord)
     # the tilt mechanism, used where the wing-mounted angle is a control (Aircraft(tilt="control")):
     # its stops, and its largest rate.  10 deg/s: the Canadair CL-84 tilt-wing went from
@@ -95,6 +97,9 @@ class WingConfig:
         if not (0.0 <= lo <= hi <= 1.0):
             raise InputError(f"{self.name}.flap_span_eta", f"0 <= start <= end <= 1, got {self.flap_span_eta!r}")
         check_range(f"{self.name}.flap_clmax_increment", self.flap_clmax_increment, 0.0, 2.5)
+        lo, hi = (float(x) for x in self.aileron_span_eta)
+        if not (0.0 <= lo <= hi <= 1.0):
+            raise InputError(f"{self.name}.aileron_span_eta", f"0 <= start <= end <= 1, got {self.aileron_span_eta!r}")
         lo, hi = (float(x) for x in self.tilt_range_deg)
         if not (-30.0 <= lo < hi <= 120.0):
             raise InputError(f"{self.name}.tilt_range_deg", f"a pair (lower, upper) with -30 <= lower < upper "
