@@ -21,7 +21,10 @@ limit here, beyond the 8 A of the measured curves the cell model is fitted to (a
 extrapolation of the cell model, stated).  The mass build-up (Raymer GA regressions, no
 calibration) gives 1348 kg = 2972 lb against NASA's "approximately 3000 lb".
 The P2006T fuselage and tails are kept (the X-57 is a modified P2006T).  The wing's
-section is not published in those sources: NACA 63-412 stands in.  The high-lift
+section is not published in those sources: NACA 63-412 stands in.  Its ailerons run from
+the flaps' end (0.75 of the semispan) to the cruise nacelle (0.96), an estimate from the
+published renderings; at the clean wing's stall onset they keep the stall margin
+(``mdo.vehicle.stall_pattern``).  The high-lift
 propellers' blown lift is captured with the "local" coupling (slipstream dynamic
 pressure in the wing forces), which over-predicts PROWIM's blown-lift rise (see
 mdo/wake/README.md) - stated, and an option.
@@ -67,7 +70,8 @@ def x57_mod4(cells_parallel: int = 40, cruise_speed_mps: float = 172 * MPH,
              cruise_altitude_m: float = 8000 * FT) -> VehicleConfig:
     wing = WingConfig("wing", span_m=31.6 * FT, area_m2=6.144, taper=1.74 / 2.48, section_eta=(0.0, 0.5, 1.0),
                       twist_deg=(3.0, 1.5, 0.0), airfoil="NACA_63_412", role="main", root_le_x_m=2.93,
-                      root_z_m=1.01, flap_span_eta=(0.09, 0.75), flap_clmax_increment=1.3)
+                      root_z_m=1.01, flap_span_eta=(0.09, 0.75), flap_clmax_increment=1.3,
+                      aileron_span_eta=(0.75, 0.96))
     htail = WingConfig("stabilator", span_m=3.454, area_m2=3.74, taper=0.762 / 1.397, section_eta=(0.0, 1.0),
                        twist_deg=(0.0, 0.0), airfoil="NACA_0015", role="horizontal_tail", root_le_x_m=7.7,
                        root_z_m=0.25, trim_incidence_range_deg=GA_STABILATOR_RANGE_DEG)
