@@ -28,8 +28,10 @@ design:
       c0_k + c1_k alpha_s <= cl_max_k - margin        for every strip k of the aileron span (P2)
 
 The lattice is the attached (linear) one; the viscous correction of the mission's nodes
-(``mdo.vehicle.viscous_wing``) is not applied here: it bends each strip's lift curve over
-near its own cl_max, which delays no strip's stall.  A wing without ailerons
+(``mdo.vehicle.viscous_wing``) is not applied here.  Its main effect, each section's own
+zero-lift angle and slope against the lattice's, shifts every strip of one section alike and
+so moves the onset but not which strips stall first; its bend of each strip's lift curve near
+cl_max delays no strip's stall.  A wing without ailerons
 (``WingConfig.aileron_span_eta`` = (0, 0)) gets no rows.
 """
 from __future__ import annotations
@@ -80,8 +82,8 @@ def stall_pattern_rows(vlm, wings, strip_eta, exposed, speed_mps=STALL_PATTERN_S
 def add_stall_pattern(ac, problem) -> None:
     """(P2) on the design's lattice as the constraint group "stall pattern" (a design
     optimization, ``ac.design_point_constraints``, with its limits on; an analysis reports it),
-    and per wing its
-    stall onset angle (deg) and the aileron strips' smallest margin to cl_max there."""
+    and per wing its stall onset angle (deg) and the aileron strips' smallest margin to
+    cl_max there (outputs)."""
     margin = float(ac.stall_margin_cl)
     per_wing = stall_pattern_rows(ac.vlm, ac.lifting_wings, ac.strip_eta, ac.strip_exposed)
     for name, (excess, _, a_s) in per_wing.items():
