@@ -173,6 +173,31 @@ def _trend_lines(rows: list) -> list:
     return lines
 
 
+J_BANDS = (0.0, 0.3, 0.5, 0.6, 0.7)
+
+
+def _band_lines(m: dict) -> list:
+    """Mean signed CT and CP errors per UIUC run and advance-ratio band (J <= J_LIMIT), with the
+    mean CP shortfall in absolute terms: which part of a run's J range carries its error."""
+    d = m["data"]
+    lines = ["", "## Error by advance ratio", "",
+             "Mean signed error per run and J band (points in the band).  The UIUC runs cover different J "
+             "ranges, so a run's mean error is also a statement about its J range.  dCP is the model's CP "
+             "minus the data's.", "",
+             "| rpm | J range | " + " | ".join(f"J {a:.1f}-{b:.1f}: CT, CP, dCP" for a, b in zip(J_BANDS[:-1], J_BANDS[1:]))
+             + " |", "|---|---|" + "---|" * (len(J_BANDS) - 1)]
+    dcp = np.asarray(m["res"]["CP"]).ravel() - d["CP"]
+    for rpm in np.unique(d["rpm"]):
+        cells = []
+        for a, b in zip(J_BANDS[:-1], J_BANDS[1:]):
+            s = (d["rpm"] == rpm) & (d["J"] > a) & (d["J"] <= b)
+            cells.append("-" if not s.any() else f"{100 * np.mean(m['eCT'][s]):+.0f} %, {100 * np.mean(m['eCP'][s]):+.0f} %, "
+                                                 f"{np.mean(dcp[s]):+.4f} ({int(s.sum())})")
+        r = d["J"][d["rpm"] == rpm]
+        lines.append(f"| {int(rpm)} | {r.min():.2f}-{r.max():.2f} | " + " | ".join(cells) + " |")
+    return lines
+
+
 def write_outputs(prop: Prop, out_dir: Path = OUT_DIR, with_sensitivity: bool = True) -> dict:
     """Figure, per-point errors, static table and the markdown summary of one propeller."""
     out_dir.mkdir(parents=True, exist_ok=True)
@@ -219,6 +244,7 @@ def write_outputs(prop: Prop, out_dir: Path = OUT_DIR, with_sensitivity: bool = 
                   "| variant | CT bias J<=0.7 | CP bias J<=0.7 | static CT bias | static CP bias |", "|---|---|---|---|---|"]
         for row in sensitivities(prop):
             lines.append(f"| {row[0]} | " + " | ".join(f"{100 * v:+.1f} %" for v in row[1:]) + " |")
+    lines += _band_lines(main)
     lines += _trend_lines(reynolds_trend(prop, main))
     lines += ["", f"Files: {stem}.png, {stem}_errors.csv (every point), {stem}_static.csv."]
     (out_dir / f"{stem}_summary.md").write_text("\n".join(lines) + "\n")
