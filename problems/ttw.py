@@ -102,6 +102,7 @@ OPTIONS = {**AIRCRAFT_OPTIONS, **AIRFRAME_OPTIONS, **TRAJECTORY_OPTIONS,
     "tilt": (str, "schedule", "control"),
     "cabin_attitude_deg": (float, 2.0, 60.0),
     "max_span_m": (float, 5.0, 30.0),
+    "ailerons_from_eta": (float, 0.0, 0.95),
 }
 
 
@@ -143,7 +144,8 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
           tilt: str = "schedule", cabin_attitude_deg: float | None = None, trim: bool = True, wing_viscous: bool | None = None,
           blown_profile_drag: bool = True, engine_out: str | None = None, fin_sizing: bool = False,
           trajectory: str = "prescribed", max_block_time_min: float | None = None,
-          min_climb_gradient_pct: float | None = None, max_span_m: float | None = None):
+          min_climb_gradient_pct: float | None = None, max_span_m: float | None = None,
+          ailerons_from_eta: float | None = None):
     p = Problem("ttw", "TTW tandem tilt-wing whole-mission optimization (Clarke et al. Eq. 7)")
     cfg = ttw(rotation)
     cfg = replace(cfg, battery=replace(cfg.battery, cells_series=cells_series, cells_parallel=cells_parallel,
@@ -152,6 +154,9 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
                   cruise_speed_mps=cruise_speed_mph * MPH, cruise_altitude_m=cruise_altitude_ft * FT)
     cfg = airframe_variant(cfg, motor_model, sections, leakage_fraction, nacelle_slipstream, cooling_drag,
                            airframe_calibration, wing_mass, max_tip_deflection_pct)
+    if ailerons_from_eta is not None:   # a what-if: the paper does not give the TTW's control surfaces
+        cfg = replace(cfg, wings=tuple(replace(w, aileron_span_eta=(ailerons_from_eta, 0.95))
+                                       if w in cfg.lifting_wings else w for w in cfg.wings))
     vehicle = Aircraft(cfg, trim=trim, wing_viscous=wing_viscous, blown_profile_drag=blown_profile_drag, n_stations=n_stations, n_azimuth=n_azimuth, wing_strips=wing_strips,
                        mass_model=mass_model, coupling=coupling, swirl_recovery=swirl_recovery, limits=limits,
                        tip_mach_limit=tip_mach_limit, allow_regeneration=allow_regeneration,
