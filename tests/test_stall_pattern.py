@@ -85,3 +85,9 @@ def test_soft_min_is_below_the_minimum_by_at_most_w_ln_n():
     f = ca.Function("f", [s], [soft_min(s, w)])
     assert float(f(x)) == pytest.approx(soft_min(x, w), abs=1e-12)
     assert np.isfinite(float(f(np.array([5.0, -3.0, 2.0, 40.0]))))      # no overflow on a wide spread
+
+
+def test_an_aileron_span_out_of_order_is_refused_naming_the_field():
+    from mdo.core.errors import InputError
+    with pytest.raises(InputError, match=r"main_wing\.aileron_span_eta.*0 <= start <= end <= 1"):
+        replace(ga2p().main_wing, aileron_span_eta=(0.9, 0.5))

@@ -93,13 +93,12 @@ class WingConfig:
         check_range(f"{self.name}.rudder_effectiveness_factor", self.rudder_effectiveness_factor, 0.0, 1.0)
         if self.role not in WING_ROLES:
             raise InputError(f"{self.name}.role", f"one of {', '.join(WING_ROLES)}, got {self.role!r}")
-        lo, hi = (float(x) for x in self.flap_span_eta)
-        if not (0.0 <= lo <= hi <= 1.0):
-            raise InputError(f"{self.name}.flap_span_eta", f"0 <= start <= end <= 1, got {self.flap_span_eta!r}")
+        for field_name in ("flap_span_eta", "aileron_span_eta"):
+            lo, hi = (float(x) for x in getattr(self, field_name))
+            if not (0.0 <= lo <= hi <= 1.0):
+                raise InputError(f"{self.name}.{field_name}",
+                                 f"0 <= start <= end <= 1, got {getattr(self, field_name)!r}")
         check_range(f"{self.name}.flap_clmax_increment", self.flap_clmax_increment, 0.0, 2.5)
-        lo, hi = (float(x) for x in self.aileron_span_eta)
-        if not (0.0 <= lo <= hi <= 1.0):
-            raise InputError(f"{self.name}.aileron_span_eta", f"0 <= start <= end <= 1, got {self.aileron_span_eta!r}")
         lo, hi = (float(x) for x in self.tilt_range_deg)
         if not (-30.0 <= lo < hi <= 120.0):
             raise InputError(f"{self.name}.tilt_range_deg", f"a pair (lower, upper) with -30 <= lower < upper "
