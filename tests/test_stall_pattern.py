@@ -28,7 +28,7 @@ def _excess(v, span, taper, twist_deg):
     d["wings"]["main_wing"].update(span=span, taper=taper, twist=np.radians(twist_deg))
     surfaces, _ = v.wing_surfaces(d)
     excess, labels, a_s = stall_pattern_rows(v._lattice(surfaces, v.S_ref), v.lifting_wings, v.strip_eta,
-                                             v.strip_exposed)["main_wing"]
+                                             v.strip_exposed, v.config.stall_pattern_speed_mps)["main_wing"]
     assert all("at stall onset" in lab for lab in labels)
     return float(np.max(np.asarray(ca.DM(excess)))), float(a_s)
 
@@ -91,3 +91,17 @@ def test_an_aileron_span_out_of_order_is_refused_naming_the_field():
     from mdo.core.errors import InputError
     with pytest.raises(InputError, match=r"main_wing\.aileron_span_eta.*0 <= start <= end <= 1"):
         replace(ga2p().main_wing, aileron_span_eta=(0.9, 0.5))
+    with pytest.raises(InputError, match="stall_pattern_speed_mps"):
+        replace(ga2p(), stall_pattern_speed_mps=200.0)
+
+
+def test_a_slower_stall_speed_brings_the_onset_earlier(ga):
+    """The stall speed (``VehicleConfig.stall_pattern_speed_mps``) sets the strips' Reynolds
+    number: a slower airplane's sections reach a lower cl_max, so its wing's stall begins at a
+    lower angle (here 61 kn against 35 kn)."""
+    d = ga.numeric_design()
+    surfaces, _ = ga.wing_surfaces(d)
+    vlm = ga._lattice(surfaces, ga.S_ref)
+    fast, slow = (stall_pattern_rows(vlm, ga.lifting_wings, ga.strip_eta, ga.strip_exposed, v)["main_wing"]
+                  for v in (ga.config.stall_pattern_speed_mps, 18.0))
+    assert float(slow[2]) < float(fast[2])      # the onset comes earlier at the lower Reynolds number

@@ -29,6 +29,7 @@ from typing import Sequence
 import numpy as np
 
 from ..core.errors import InputError, check_positive, check_range
+from ..core.units import KNOT
 from .wing_structure import WingStructure
 
 __all__ = ["WingConfig", "RotorGroupConfig", "MotorConfig", "FuselageConfig", "BatteryConfig",
@@ -484,6 +485,9 @@ class VehicleConfig:
     # Aircraft Design 6th ed., ch. 16) - a requirement the designer sets
     cg_z_m: float = 0.0
     static_margin_min: float = 0.05
+    # the stall speed the wing's stall pattern is checked at (its strips' Reynolds numbers,
+    # sea level; mdo.vehicle.stall_pattern): 61 kn, CS-23's stall-speed limit for the class
+    stall_pattern_speed_mps: float = 61.0 * KNOT
     # where the layout can put the CG (x, m; the battery moves it within this range): None is
     # the main wing's mean aerodynamic chord from 0 to 50 % (an airplane balances on its wing;
     # light aircraft fly between about 15 and 35 % MAC); a tandem or canard states its own
@@ -518,6 +522,7 @@ class VehicleConfig:
         check_positive("cruise_speed_mps", self.cruise_speed_mps, "m/s")
         check_range("cruise_altitude_m", self.cruise_altitude_m, 0.0, 20000.0, "m")
         check_range("static_margin_min", self.static_margin_min, -0.5, 0.5)
+        check_range("stall_pattern_speed_mps", self.stall_pattern_speed_mps, 5.0, 100.0, "m/s")
         check_range("cg_z_m", self.cg_z_m, -20.0, 20.0, "m")
         if self.cg_x_range_m is not None:
             r = tuple(float(x) for x in self.cg_x_range_m)

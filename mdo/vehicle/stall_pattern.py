@@ -17,9 +17,9 @@ design:
 
       alpha_i = (cl_max_i - c0_i) / c1_i                                          (P1)
 
-  with cl_max at the strip's Reynolds number for a sea-level stall at ``speed_mps``
-  (default 61 kn = 31.4 m/s, CS-23's stall-speed limit for the class; cl_max changes by
-  about 0.02 between 45 and 61 kn on the GA section).
+  with cl_max at the strip's Reynolds number for a sea-level stall at the vehicle's
+  ``VehicleConfig.stall_pattern_speed_mps`` (default 61 kn = 31.4 m/s, CS-23's stall-speed
+  limit for the class; a small UAV states its own).
 * The stall onset is the smooth minimum of (P1) over the exposed strips inboard of the
   ailerons, ``alpha_s = soft_min(alpha_i, w)``, w = 0.1 deg (below the true minimum by at
   most w ln n, 0.3 deg for 20 strips: conservative).
@@ -43,19 +43,18 @@ import numpy as np
 
 from ..core.atmosphere import atmosphere
 from ..core.smooth import soft_min
-from ..core.units import KNOT
 from .stall import clmax_of_re
 
-__all__ = ["STALL_PATTERN_SPEED_MPS", "ONSET_WIDTH_RAD", "stall_pattern_rows", "add_stall_pattern"]
+__all__ = ["ONSET_WIDTH_RAD", "stall_pattern_rows", "add_stall_pattern"]
 
-STALL_PATTERN_SPEED_MPS = 61.0 * KNOT      # CS-23's stall-speed limit (the Reynolds reference only)
 ONSET_WIDTH_RAD = math.radians(0.1)
 _ALPHA1 = 0.1                              # rad, the second lattice solve
 
 
-def stall_pattern_rows(vlm, wings, strip_eta, exposed, speed_mps=STALL_PATTERN_SPEED_MPS) -> dict:
+def stall_pattern_rows(vlm, wings, strip_eta, exposed, speed_mps) -> dict:
     """Per wing of ``wings`` (WingConfig) with an aileron span: ``{name: (excess, labels,
-    alpha_s)}``, ``excess`` the column ``c0_k + c1_k alpha_s - cl_max_k`` of its aileron strips
+    alpha_s)}`` for a stall at ``speed_mps`` (sea level), ``excess`` the column
+    ``c0_k + c1_k alpha_s - cl_max_k`` of its aileron strips
     (P2 asks ``excess + margin <= 0``) and ``alpha_s`` its stall onset (rad, P1)."""
     atm = atmosphere(0.0)
     re_per_chord = float(atm["density_kgpm3"]) * speed_mps / float(atm["dynamic_viscosity_Pas"])
@@ -85,7 +84,8 @@ def add_stall_pattern(ac, problem) -> None:
     and per wing its stall onset angle (deg) and the aileron strips' smallest margin to
     cl_max there (outputs)."""
     margin = float(ac.stall_margin_cl)
-    per_wing = stall_pattern_rows(ac.vlm, ac.lifting_wings, ac.strip_eta, ac.strip_exposed)
+    per_wing = stall_pattern_rows(ac.vlm, ac.lifting_wings, ac.strip_eta, ac.strip_exposed,
+                                  ac.config.stall_pattern_speed_mps)
     for name, (excess, _, a_s) in per_wing.items():
         problem.output(f"{name}.stall_onset_alpha_deg", a_s * 180.0 / np.pi, unit="deg", summary=True)
         problem.output(f"{name}.aileron_cl_margin_at_stall_onset", -ca.mmax(excess), unit="-", summary=True)
