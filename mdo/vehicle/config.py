@@ -14,11 +14,12 @@ assembly turns them into symbolic expressions.  Conventions:
   fraction of the root chord (Fig. 12): at fixed reference area a change of span
   or taper rescales the whole planform.
 
-The records, in file order: ``WingConfig`` (a lifting surface, tail or fin; a fin's
-rudder), ``MotorConfig`` (rating, short-time/take-off factor, losses), ``RotorGroupConfig``
+The records, in file order: ``WingConfig`` (a lifting surface, tail or fin; its flaps and
+ailerons; a fin's rudder), ``MotorConfig`` (rating, short-time/take-off factor, losses), ``RotorGroupConfig``
 (rotors, their motor, nacelles, what a failed motor does), ``FuselageConfig``,
-``BatteryConfig``, ``AirframeDragConfig`` and ``VehicleConfig`` (the whole aircraft and its
-consistency checks: roles, references, disk overlaps).
+``BatteryConfig``, ``AirframeDragConfig`` and ``VehicleConfig`` (the whole aircraft: payload,
+load factor, cruise reference, CG and static margin, the stall pattern's stall speed, mass
+inputs, wing structure; and its consistency checks: roles, references, disk overlaps).
 """
 from __future__ import annotations
 

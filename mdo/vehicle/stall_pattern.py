@@ -39,10 +39,10 @@ from __future__ import annotations
 import math
 
 import casadi as ca
-import numpy as np
 
 from ..core.atmosphere import atmosphere
 from ..core.smooth import soft_min
+from ..core.units import DEG
 from .stall import clmax_of_re
 
 __all__ = ["ONSET_WIDTH_RAD", "stall_pattern_rows", "add_stall_pattern"]
@@ -87,7 +87,7 @@ def add_stall_pattern(ac, problem) -> None:
     per_wing = stall_pattern_rows(ac.vlm, ac.lifting_wings, ac.strip_eta, ac.strip_exposed,
                                   ac.config.stall_pattern_speed_mps)
     for name, (excess, _, a_s) in per_wing.items():
-        problem.output(f"{name}.stall_onset_alpha_deg", a_s * 180.0 / np.pi, unit="deg", summary=True)
+        problem.output(f"{name}.stall_onset_alpha_deg", a_s / DEG, unit="deg", summary=True)
         problem.output(f"{name}.aileron_cl_margin_at_stall_onset", -ca.mmax(excess), unit="-", summary=True)
     if per_wing and ac.design_point_constraints and ac.limits_on and margin >= 0.0:
         rows = ca.vertcat(*[e for e, _, _ in per_wing.values()]) + margin
