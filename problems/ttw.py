@@ -89,7 +89,7 @@ from mdo.studies import (AIRCRAFT_OPTIONS, AIRFRAME_OPTIONS, TRAJECTORY_OPTIONS,
                          minimize_battery_energy, trajectory_envelope)
 from mdo.wake import DEFAULT_CORE_REL, DEFAULT_STRIP_SAMPLES
 from mdo.vehicle.aircraft import Aircraft
-from mdo.vehicle.catalog import ttw
+from mdo.vehicle.catalog import TTW_AILERON_SPAN_ETA, ttw
 
 
 # allowed values of the -o options (mdo.nlp.options; `mdo run problems/ttw.py --options`)
@@ -103,6 +103,7 @@ OPTIONS = {**AIRCRAFT_OPTIONS, **AIRFRAME_OPTIONS, **TRAJECTORY_OPTIONS,
     "cabin_attitude_deg": (float, 2.0, 60.0),
     "max_span_m": (float, 5.0, 30.0),
     "ailerons_from_eta": (float, 0.0, 0.95),
+    "ailerons": (bool,),
 }
 
 
@@ -145,7 +146,7 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
           blown_profile_drag: bool = True, engine_out: str | None = None, fin_sizing: bool = False,
           trajectory: str = "prescribed", max_block_time_min: float | None = None,
           min_climb_gradient_pct: float | None = None, max_span_m: float | None = None,
-          ailerons_from_eta: float | None = None):
+          ailerons_from_eta: float | None = None, ailerons: bool = True):
     p = Problem("ttw", "TTW tandem tilt-wing whole-mission optimization (Clarke et al. Eq. 7)")
     cfg = ttw(rotation)
     cfg = replace(cfg, battery=replace(cfg.battery, cells_series=cells_series, cells_parallel=cells_parallel,
@@ -154,8 +155,12 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
                   cruise_speed_mps=cruise_speed_mph * MPH, cruise_altitude_m=cruise_altitude_ft * FT)
     cfg = airframe_variant(cfg, motor_model, sections, leakage_fraction, nacelle_slipstream, cooling_drag,
                            airframe_calibration, wing_mass, max_tip_deflection_pct)
-    if ailerons_from_eta is not None:   # a what-if: the paper does not give the TTW's control surfaces
-        cfg = replace(cfg, wings=tuple(replace(w, aileron_span_eta=(ailerons_from_eta, 0.95))
+    # the paper gives no control surfaces: the catalog's ailerons (TTW_AILERON_SPAN_ETA) are ours;
+    # -o ailerons_from_eta moves their inner end, -o ailerons=false flies the wings without them
+    # (the stall pattern then leaves the tapers free, issue 16 item 4)
+    if ailerons_from_eta is not None or not ailerons:
+        eta = None if not ailerons else (ailerons_from_eta, TTW_AILERON_SPAN_ETA[1])
+        cfg = replace(cfg, wings=tuple(replace(w, aileron_span_eta=eta)
                                        if w in cfg.lifting_wings else w for w in cfg.wings))
     vehicle = Aircraft(cfg, trim=trim, wing_viscous=wing_viscous, blown_profile_drag=blown_profile_drag, n_stations=n_stations, n_azimuth=n_azimuth, wing_strips=wing_strips,
                        mass_model=mass_model, coupling=coupling, swirl_recovery=swirl_recovery, limits=limits,

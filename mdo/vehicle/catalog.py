@@ -200,6 +200,12 @@ TTW_FRONT_WING_TRIM_RANGE_DEG = (-10.0, 10.0)
 TTW_CG_Z_M = 0.8
 # a tandem balances between its wings: the CG may lie anywhere between their quarter chords
 TTW_CG_X_RANGE_M = (0.6 + 0.25 * 1.13, 4.6 + 0.25 * 1.13)
+# Its roll control in wing-borne flight: ailerons on the outer 0.6-0.95 of both semispans (our
+# layout; the paper gives no control surfaces).  The tilt-wings that flew did the same: the
+# Canadair CL-84 and the LTV XC-142A rolled with ailerons in wing-borne flight and with
+# differential propeller pitch in hover.  The span is an estimate, like the GA wing's; it makes
+# the stall pattern (mdo.vehicle.stall_pattern) hold both wings' taper (issue 16 item 4).
+TTW_AILERON_SPAN_ETA = (0.6, 0.95)
 
 
 def ttw(rotation: str = "inboard_up") -> VehicleConfig:
@@ -208,10 +214,12 @@ def ttw(rotation: str = "inboard_up") -> VehicleConfig:
     tandem = WingConfig("tandem_wing", span_m=9.6, area_m2=10.85, taper=1.0, section_eta=sections,
                         twist_deg=(4.0, 3.0, 2.0, 1.0, 0.0), airfoil=GA_WING_AIRFOIL,
                         thickness_to_chord=0.12, root_le_x_m=0.6, root_z_m=0.4, tilting=True, role="tandem",
-                        trim_incidence_range_deg=TTW_FRONT_WING_TRIM_RANGE_DEG)
+                        trim_incidence_range_deg=TTW_FRONT_WING_TRIM_RANGE_DEG,
+                        aileron_span_eta=TTW_AILERON_SPAN_ETA)
     main = WingConfig("main_wing", span_m=9.6, area_m2=10.85, taper=1.0, section_eta=sections,
                       twist_deg=(4.0, 3.0, 2.0, 1.0, 0.0), airfoil=GA_WING_AIRFOIL,
-                      thickness_to_chord=0.12, root_le_x_m=4.6, root_z_m=1.6, tilting=True, role="main")
+                      thickness_to_chord=0.12, root_le_x_m=4.6, root_z_m=1.6, tilting=True, role="main",
+                      aileron_span_eta=TTW_AILERON_SPAN_ETA)
     fin = WingConfig("vertical_tail", span_m=1.2, area_m2=1.2, taper=0.6, section_eta=(0.0, 1.0),
                      twist_deg=(0.0, 0.0), airfoil=TAIL_AIRFOIL, thickness_to_chord=0.12,
                      sweep_quarter_chord_deg=25.0, root_le_x_m=4.9, root_z_m=1.0, role="fin")
