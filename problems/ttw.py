@@ -159,7 +159,7 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
     # -o ailerons_from_eta moves their inner end, -o ailerons=false flies the wings without them
     # (the stall pattern then leaves the tapers free, issue 16 item 4)
     if ailerons_from_eta is not None or not ailerons:
-        eta = None if not ailerons else (ailerons_from_eta, TTW_AILERON_SPAN_ETA[1])
+        eta = (0.0, 0.0) if not ailerons else (ailerons_from_eta, TTW_AILERON_SPAN_ETA[1])
         cfg = replace(cfg, wings=tuple(replace(w, aileron_span_eta=eta)
                                        if w in cfg.lifting_wings else w for w in cfg.wings))
     vehicle = Aircraft(cfg, trim=trim, wing_viscous=wing_viscous, blown_profile_drag=blown_profile_drag, n_stations=n_stations, n_azimuth=n_azimuth, wing_strips=wing_strips,

@@ -9,7 +9,7 @@ from mdo.core.smooth import soft_min
 from mdo.mission import Mission
 from mdo.nlp import Problem
 from mdo.vehicle.aircraft import Aircraft
-from mdo.vehicle.catalog import ga2p, ttw
+from mdo.vehicle.catalog import TTW_AILERON_SPAN_ETA, ga2p, ttw
 from mdo.vehicle.stall_pattern import stall_pattern_rows
 from test_operating_limits import SMALL, _initial, _segments
 
@@ -69,7 +69,9 @@ def test_the_pattern_is_a_design_constraint_of_an_optimization_and_reported_by_a
 
 
 def test_a_wing_without_ailerons_gets_no_rows():
-    assert ttw().main_wing.aileron_span_eta == (0.0, 0.0)
+    # the TTW's ailerons are its catalog's; a fin has none
+    assert ttw().main_wing.aileron_span_eta == TTW_AILERON_SPAN_ETA == ttw().wings[1].aileron_span_eta
+    assert ttw().wings[2].aileron_span_eta == (0.0, 0.0)
     cfg = ga2p()
     bare = replace(cfg, wings=(replace(cfg.main_wing, aileron_span_eta=(0.0, 0.0)),) + tuple(cfg.wings[1:]))
     p = Problem("bare")
