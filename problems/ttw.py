@@ -10,7 +10,10 @@ clearance and the mission, in one IPOPT solve.  ``--analysis`` freezes the desig
 Table 3's initial values.
 
 Every operating limit applies at every node (as ``problems/ga2p.py``); the transition
-segments carry no stall limit (post-stall strips instead).
+segments carry no stall limit (post-stall strips instead).  Both wings roll with ailerons over
+0.6-0.95 of their semispans (ours, ``mdo.vehicle.catalog.TTW_AILERON_SPAN_ETA``), so the
+stall pattern (``mdo.vehicle.stall_pattern``) holds their taper; ``-o ailerons=false``
+flies the wings without them, as the paper gives them.
 
 The battery and its ratings depart from Table 1, because with every limit on the
 Table 1 TTW cannot fly Table 5's profile (measured with this problem's analysis):
