@@ -42,6 +42,7 @@ import numpy as np
 from mdo.core.atmosphere import kinematic_viscosity
 from mdo.rotor import RotorGeometry, analyze
 from mdo.rotor.geometry import DATA_DIR
+from mdo.rotor.sections import RotationalAugmentation, _linear_lift, section, section_coefficients
 
 INCH_M = 0.0254
 SECTIONS = "e63@ncrit=7:0.5:clarky@ncrit=7"
@@ -127,6 +128,53 @@ def sensitivities(prop: Prop) -> list:
     rows.append(("no stall delay", *_bias(run(prop, airfoil=SECTIONS))))
     rows.append(("tabulated blade angles (no pitch reference)", *_bias(run(prop, pitch_reference=False))))
     return rows
+
+
+class _ScaledDrag:
+    """A section whose profile drag is ``factor`` times another's (lift unchanged): the
+    "what if the blade's real sections drag more than their XFOIL polars" variant of the
+    uncertainty study (roughness, a blunt moulded trailing edge, laminar bubbles that XFOIL
+    under-predicts).  A what-if for the summary, not part of the model."""
+
+    spanwise = True
+
+    def __init__(self, sec, factor: float):
+        self.sec, self.factor = sec, float(factor)
+        self.name = f"{getattr(sec, 'name', sec)} x{factor:g} cd"
+
+    def coefficients(self, alpha, reynolds, mach=0.0, x=0.5):
+        cl, cd = section_coefficients(self.sec, alpha, reynolds, mach, x)
+        return cl, self.factor * cd
+
+    def linear_lift(self, x=0.5):
+        return _linear_lift(self.sec, x)
+
+    def cl(self, alpha, reynolds, mach=0.0, x=0.5):
+        return self.coefficients(alpha, reynolds, mach, x)[0]
+
+    def cd(self, alpha, reynolds, mach=0.0, x=0.5):
+        return self.coefficients(alpha, reynolds, mach, x)[1]
+
+
+DRAG_FACTORS = (1.3, 1.6)
+
+
+def drag_lines(prop: Prop) -> list:
+    """Per-run mean |error| with the sections' profile drag scaled (``_ScaledDrag``, stall delay
+    kept): which part of the CP error a higher section drag could account for."""
+    models = [("model", run(prop))] + [
+        (f"section drag x{k:g}", run(prop, airfoil=RotationalAugmentation(_ScaledDrag(section(SECTIONS), k),
+                                                                            STALL_DELAY)))
+        for k in DRAG_FACTORS]
+    tables = [(name, table(m)) for name, m in models]
+    lines = ["", "## What a higher section drag would and would not account for", "",
+             "Mean |error| CT / CP (J <= 0.7 and static) with the sections' profile drag scaled, lift unchanged "
+             "(a what-if, not the model: real moulded blades may drag more than their XFOIL polars):", "",
+             "| runs | " + " | ".join(name for name, _ in tables) + " |", "|---|" + "---|" * len(tables)]
+    for k in tables[0][1]:
+        lines.append(f"| {k} | " + " | ".join(f"{100 * t[k]['CT_mean']:.1f} / {100 * t[k]['CP_mean']:.1f} %"
+                                              for _, t in tables) + " |")
+    return lines
 
 
 TREND_J = (0.3, 0.45, 0.55, 0.65)
@@ -245,6 +293,8 @@ def write_outputs(prop: Prop, out_dir: Path = OUT_DIR, with_sensitivity: bool = 
         for row in sensitivities(prop):
             lines.append(f"| {row[0]} | " + " | ".join(f"{100 * v:+.1f} %" for v in row[1:]) + " |")
     lines += _band_lines(main)
+    if with_sensitivity:
+        lines += drag_lines(prop)
     lines += _trend_lines(reynolds_trend(prop, main))
     lines += ["", f"Files: {stem}.png, {stem}_errors.csv (every point), {stem}_static.csv."]
     (out_dir / f"{stem}_summary.md").write_text("\n".join(lines) + "\n")
