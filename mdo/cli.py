@@ -344,7 +344,7 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("--from-baseline", metavar="DIR",
                      help="the run folder of a converged baseline analysis of this problem (mdo run "
                           "--analysis): copied into OUT/analysis, and the optimization starts from it as "
-                          "from its own stage 1 (monotone barrier, adaptive fallback)")
+                          "from its own stage 1 (monotone barrier with an adaptive fallback, unless the problem chose its own barrier)")
     run.add_argument("--no-baseline", action="store_true",
                      help="optimize straight from the problem's initial guess (default for a problem with "
                           "design variables: first solve the baseline analysis into OUT/analysis, then "

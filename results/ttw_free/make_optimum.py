@@ -18,7 +18,7 @@ free (e.g. ``CL,CR,D,RCL,RCR,RD``: the wing-borne ones; the others keep Table 5)
 The optimization (design free) starts from the prescribed-profile optimum
 (default ``--start results/ttw/solution.json``: a partial warm start, the freed speeds and
 durations starting at Table 5's values) with the monotone barrier ``mdo run`` uses from a
-converged point (``Problem.start_from_baseline``).  Why not ``mdo run -o trajectory=free``:
+converged point (``FROM_BASELINE_OPTIONS``, with the divergence watch).  Why not ``mdo run -o trajectory=free``:
 the TTW's baseline analysis does not converge from scratch (``results/ttw/README.md``),
 and a free-trajectory baseline from the prescribed baseline's mission ended after 300
 iterations without converging (adaptive barrier, 2026-12-04; the Table 5 profile ends its
@@ -34,6 +34,7 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT))
 
+from mdo.nlp.ipopt import FROM_BASELINE_OPTIONS, DivergenceWatch  # noqa: E402
 from mdo.nlp.problem import read_solution  # noqa: E402
 from mdo.nlp.run import _import_file, solve_into  # noqa: E402
 
@@ -91,6 +92,9 @@ print(problem.warm_start(args.start, partial=True, multipliers=False).describe()
 start_names = {v["name"] for v in read_solution(Path(args.start))["variables"]}
 if args.tilt == "control" and "wing_tilt" not in start_names:
     continuous_tilt_start(problem, Path(args.start).parent)   # a fixed-tilt start
-problem.start_from_baseline()
+# the monotone barrier from a converged point, as committed (problems/ttw.py's own adaptive start is
+# for its prescribed optimization from its baseline, 2026-12-06 fifteenth session)
+problem.ipopt_options.update(FROM_BASELINE_OPTIONS)
+problem.divergence_watch = DivergenceWatch()
 sol = solve_into(problem, args.out, verbose=True, max_iter=400)
 print(sol.status, sol.iterations, sol.objective, flush=True)
