@@ -48,8 +48,8 @@ def _draw(probe, rng, spread, factor=None):
 
 
 def _optimize(module, warm, start=None, logs=None):
-    """Stage 2 as ``mdo run``: the monotone barrier from the baseline, the adaptive barrier
-    if that does not converge (``mdo.nlp.run.optimize_from_baseline``, shared with the CLI)."""
+    """Stage 2 as ``mdo run``: the monotone barrier from the baseline (unless the problem chose
+    its own barrier), the adaptive barrier if that does not converge (``mdo.nlp.run.optimize_from_baseline``, shared with the CLI)."""
     op = module.build(analysis=False)
 
     def from_start():
@@ -103,7 +103,8 @@ def _write_report(args, rows) -> list:
                 f"the drawn design" if args.from_baseline else
                 "two-stage continuation per start (mission analysis at the drawn design, then the optimization "
                 "warm-started from it)")
-             + "; the monotone barrier first, the adaptive barrier if it does not converge, as `mdo run`.  "
+             + "; the monotone barrier first (unless the problem chose its own barrier), the adaptive barrier if it does "
+             "not converge, as `mdo run`.  "
              f"Produced by `python tests/bench/robustness.py {' '.join(sys.argv[1:])}` (each start in its own "
              "process" + (f", killed after {args.timeout:g} s" if args.timeout else "") + ").", "",
              f"**{len(ok)} of {len(rows)} converged** (IPOPT Solve_Succeeded)."]
