@@ -177,6 +177,52 @@ def drag_lines(prop: Prop) -> list:
     return lines
 
 
+def apparent_pitch(prop: Prop, iterations: int = 8) -> dict:
+    """Per measured point (J <= J_LIMIT): the extra collective [deg] that makes the model's CT
+    equal the data's (secant iterations on the rigid-blade BEMT), and the model's CP there."""
+    rot, d = prop.rotor(), prop.data("performance")
+    d = d[d["J"] <= J_LIMIT]
+    n = d["rpm"] / 60.0
+
+    def model(extra_deg):
+        r = analyze(rot, omega_radps=2 * math.pi * n, v_axial_mps=d["J"] * n * prop.diameter_m,
+                    n_stations=N_STATIONS, pitch_rad=rot.pitch_offset_rad + np.radians(extra_deg))
+        return np.asarray(r["CT"]).ravel(), np.asarray(r["CP"]).ravel()
+
+    x0, x1 = np.zeros(d.size), np.ones(d.size)
+    f0, f1 = model(x0)[0] - d["CT"], model(x1)[0] - d["CT"]
+    for _ in range(iterations):
+        step = f1 - f0
+        x0, f0, x1 = x1, f1, x1 - f1 * (x1 - x0) / np.where(np.abs(step) > 1e-12, step, 1e-12)
+        f1 = model(x1)[0] - d["CT"]
+    ct, cp = model(x1)
+    return {"data": d, "extra_deg": x1, "eCP": cp / d["CP"] - 1, "eCP0": model(np.zeros(d.size))[1] / d["CP"] - 1,
+            "eCT": ct / d["CT"] - 1}
+
+
+def _pitch_lines(prop: Prop) -> list:
+    """The apparent-pitch table: per run and J band, the collective that matches CT and the CP
+    error before and after it."""
+    a = apparent_pitch(prop)
+    d = a["data"]
+    lines = ["", "## Apparent pitch: what a rigid blade would need", "",
+             "Per run and J band: the extra collective that makes the model's CT equal the measured one (per "
+             f"point; the largest CT error left {100 * np.max(np.abs(a['eCT'])):.1e} %), and the mean CP error "
+             "before and after it.  Where the CP error goes with it, the point's error is a blade-angle error "
+             "(a rigid blade at the wrong pitch: blade twist under load, or the blade-angle reference); where it "
+             "stays, something other than pitch (section drag) is missing.", "",
+             "| rpm | " + " | ".join(f"J {lo:.1f}-{hi:.1f}: d pitch, CP err before -> after" for lo, hi in
+                                    zip(J_BANDS[:-1], J_BANDS[1:])) + " |", "|---|" + "---|" * (len(J_BANDS) - 1)]
+    for rpm in np.unique(d["rpm"]):
+        cells = []
+        for lo, hi in zip(J_BANDS[:-1], J_BANDS[1:]):
+            s = (d["rpm"] == rpm) & (d["J"] > lo) & (d["J"] <= hi)
+            cells.append("-" if not s.any() else f"{np.mean(a['extra_deg'][s]):+.2f} deg, "
+                                                 f"{100 * np.mean(a['eCP0'][s]):+.0f} -> {100 * np.mean(a['eCP'][s]):+.0f} %")
+        lines.append(f"| {int(rpm)} | " + " | ".join(cells) + " |")
+    return lines
+
+
 TREND_J = (0.3, 0.45, 0.55, 0.65)
 
 
@@ -294,6 +340,7 @@ def write_outputs(prop: Prop, out_dir: Path = OUT_DIR, with_sensitivity: bool = 
             lines.append(f"| {row[0]} | " + " | ".join(f"{100 * v:+.1f} %" for v in row[1:]) + " |")
     lines += _band_lines(main)
     if with_sensitivity:
+        lines += _pitch_lines(prop)
         lines += drag_lines(prop)
     lines += _trend_lines(reynolds_trend(prop, main))
     lines += ["", f"Files: {stem}.png, {stem}_errors.csv (every point), {stem}_static.csv."]
