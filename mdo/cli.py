@@ -211,31 +211,33 @@ def _run_stages(args, options, folder, ws_data, progress) -> int:
 
 def _optimize_from(problem, baseline_sol, folder, args, what, progress) -> tuple:
     """Stage 2 from the converged baseline with DESIGN rule 7's fallback
-    (``mdo.nlp.run.optimize_from_baseline``): the monotone barrier first; if it ends
-    without an optimum (not an interrupt, not an iteration limit the user set with
-    --max-iter; the problem's own limit counts as a failure: GA-2P at 170 mph wanders 500
-    iterations with the monotone barrier), its files move to ``monotone/`` in the stage and
-    the optimization starts again from the baseline with IPOPT's adaptive barrier (GA-4P:
-    monotone ends in a local infeasibility, adaptive converges)."""
+    (``mdo.nlp.run.optimize_from_baseline``): the first barrier of ``problem.barrier_order``
+    (monotone, unless the problem chose adaptive first: the TTW); if it ends without an
+    optimum (not an interrupt, not an iteration limit the user set with --max-iter; the
+    problem's own limit counts as a failure: GA-2P at 170 mph wanders 500 iterations with
+    the monotone barrier), its files move to ``monotone/`` (or ``adaptive/``) in the stage and
+    the optimization starts again from the baseline with the other barrier (GA-4P: monotone
+    ends in a local infeasibility, adaptive converges)."""
     from .nlp.run import load_warm_start, optimize_from_baseline
 
     codes = []
 
-    def solve(adaptive):
-        code, sol = _solve_stage(problem, folder.stage, args, f"{what}, adaptive barrier" if adaptive else what,
-                                 progress)
+    def solve(fallback):
+        label = f"{what}, {problem.barrier_order[1]} barrier" if fallback else what
+        code, sol = _solve_stage(problem, folder.stage, args, label, progress)
         codes.append(code)
         return sol
 
     def keep_failed(failed):
-        kept = folder.stage / "monotone"
+        first, second = problem.barrier_order
+        kept = folder.stage / first
         kept.mkdir()
         for f in list(folder.stage.iterdir()):
-            if f.name not in ("analysis", "monotone", "INCOMPLETE.txt"):
+            if f.name not in ("analysis", first, "INCOMPLETE.txt"):
                 f.rename(kept / f.name)
         why = f" ({failed.stopped_because})" if failed.stopped_because else ""
-        print(f"mdo: the monotone barrier ended {failed.status} after {failed.iterations} iterations{why} "
-              f"(kept in monotone/); starting again from the baseline with the adaptive barrier")
+        print(f"mdo: the {first} barrier ended {failed.status} after {failed.iterations} iterations{why} "
+              f"(kept in {first}/); starting again from the baseline with the {second} barrier")
 
     sol = optimize_from_baseline(problem, lambda: load_warm_start(problem, baseline_sol), solve,
                                  on_fallback=keep_failed, iteration_limit_is_final=args.max_iter is not None)

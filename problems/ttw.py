@@ -180,10 +180,11 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
     p = minimize_battery_energy(p, vehicle, mission)
     p.ipopt_options["tol"] = float(tol)
     p.ipopt_options["acceptable_tol"] = max(1e-3, 10 * float(tol))
-    # The optimization from the baseline starts IPOPT's adaptive barrier at its own mu 0.1, a choice
-    # of this problem that Problem.start_from_baseline honours.  The GA problems' monotone start at
-    # mu 1e-4 (FROM_BASELINE_OPTIONS) runs away on the TTW: 143 iterations to a dual infeasibility
-    # of 9e4 before its adaptive fallback converged in 75 (2026-12-06, results/ttw/README.md).
-    p.ipopt_options["mu_strategy"] = "adaptive"
-    p.ipopt_options["mu_init"] = 0.1
+    # From its baseline the TTW tries IPOPT's adaptive barrier first, the monotone one second
+    # (Problem.barrier_order; the GA problems the other way round).  Measured 2026-12-06: from
+    # the baseline the monotone start at mu 1e-4 ran away (143 iterations to a dual infeasibility
+    # of 9e4) before the adaptive barrier converged from the same point in 75; from a design
+    # drawn within +-15 % (robustness start 0) the adaptive barrier stalls at mu 0.1 while the
+    # monotone one converges in 107 (results/ttw/README.md, results/robustness/ttw.md).
+    p.barrier_order = ("adaptive", "monotone")
     return p

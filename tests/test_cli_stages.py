@@ -107,6 +107,44 @@ def test_a_wandering_monotone_attempt_is_given_up_early(tmp_path, monkeypatch, c
     assert "dual infeasibility above" in (out / "summary.md").read_text()
 
 
+def test_a_problem_may_try_the_adaptive_barrier_first(tmp_path, monkeypatch, capsys):
+    """Problem.barrier_order = ("adaptive", "monotone") (the TTW's): the adaptive attempt is the
+    watched first one; when it fails (here the watch trips at once) its files are kept in
+    adaptive/ and the monotone barrier converges from the baseline."""
+    from mdo import cli
+    from mdo.nlp import ipopt, problem as problem_mod
+
+    first_attempt = problem_mod.Problem.start_from_baseline
+
+    def adaptive_first(self):
+        self.barrier_order = ("adaptive", "monotone")
+        return first_attempt(self)
+
+    monkeypatch.setattr(problem_mod.Problem, "start_from_baseline", adaptive_first)
+    monkeypatch.setattr(problem_mod, "DivergenceWatch",
+                        lambda: ipopt.DivergenceWatch(after_iter=1, inf_du_max=-1.0, run=1))
+    out = tmp_path / "run"
+    code = cli.main(["run", str(POLAR), "-o", "design_wing_area=true", "--out", str(out), "--quiet"])
+    assert code == 0, capsys.readouterr().err
+    opt, failed = _summary(out), _summary(out / "adaptive")
+    assert failed["status"] == "User_Requested_Stop" and failed["barrier"]["mu_strategy"] == "adaptive"
+    assert opt["status"] == "Solve_Succeeded"
+    assert opt["barrier"]["mu_strategy"] == "monotone"
+    assert opt["barrier"]["mu_init"] == ipopt.FROM_BASELINE_OPTIONS["mu_init"]
+    assert opt["barrier"]["fallback_from"]["folder"] == "adaptive"
+    assert not (out / "monotone").exists()
+
+
+def test_barrier_order_names_two_different_barriers():
+    from mdo.core.errors import InputError
+    from mdo.nlp import Problem
+
+    p = Problem("order")
+    p.barrier_order = ("adaptive", "adaptive")
+    with pytest.raises(InputError, match="barrier_order"):
+        p.start_from_baseline()
+
+
 def test_divergence_watch_reads_the_log_as_written(tmp_path):
     from mdo.nlp.ipopt import Diverging, DivergenceWatch
 

@@ -60,6 +60,7 @@ FRAGILE = []   # Opti objects whose solve ended so: kept alive until os._exit
 # the GA iterates climbed from 74 to 85 kWh before coming back; from 1e-4 GA-8P needs 23
 # iterations instead of 51 to the same optimum, GA-2P 26 instead of 43.
 FROM_BASELINE_OPTIONS = {"mu_strategy": "monotone", "mu_init": 1e-4}
+BARRIERS = ("monotone", "adaptive")   # Problem.barrier_order: monotone = FROM_BASELINE_OPTIONS
 
 
 

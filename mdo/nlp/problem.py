@@ -31,7 +31,7 @@ from ..core.errors import InputError
 from ..core.signals import interrupt_signal
 from .hessian import lagrangian_hessian_functions
 from .warm_start import WarmStart, WarmStartError, WarmStartMixin, read_solution  # noqa: F401
-from .ipopt import (CRASH_ON_EXIT_STATUS, FRAGILE, FROM_BASELINE_OPTIONS, HESSIAN_CHOICES,  # noqa: F401
+from .ipopt import (BARRIERS, CRASH_ON_EXIT_STATUS, FRAGILE, FROM_BASELINE_OPTIONS, HESSIAN_CHOICES,  # noqa: F401
                     DivergenceWatch, check_threads, default_threads,
                     INTERRUPT_STATUS, WARM_START_OPTIONS, _outcome, _signals_as_interrupts)
 # re-exported: the solved side lives in mdo.nlp.solution
@@ -148,27 +148,40 @@ class Problem(WarmStartMixin):
             "nlp_scaling_method": "gradient-based",
         }
         self._analysis = False
+        # the barriers of an optimization from its converged baseline, in the order tried: the
+        # first with the divergence watch, the second if the first ends without an optimum
+        # (start_from_baseline, fallback_barrier_after; DESIGN rule 7 in mdo/README.md)
+        self.barrier_order: tuple[str, str] = ("monotone", "adaptive")
         self.barrier_fallback_from: dict | None = None   # the failed attempt a retry follows
         self.divergence_watch: DivergenceWatch | None = None   # gives up a wandering solve (has a fallback)
 
     # ------------------------------------------------------------------ build
     def start_from_baseline(self) -> bool:
-        """Use the barrier settings of an optimization that starts from its converged
-        baseline (``FROM_BASELINE_OPTIONS``), unless the problem chose its own barrier.
-        True if they were applied (then ``adaptive_barrier_after`` may retry without them)."""
+        """Use the first barrier of ``barrier_order`` for an optimization that starts from its
+        converged baseline ("monotone": ``FROM_BASELINE_OPTIONS``; "adaptive": IPOPT's adaptive
+        barrier from its own mu_init), with the divergence watch, unless the problem set its own
+        barrier (a ``mu_init`` or a non-adaptive ``mu_strategy`` in its IPOPT options).  True if
+        applied (then ``fallback_barrier_after`` may retry with the second)."""
+        if self.barrier_order[0] not in BARRIERS or self.barrier_order[1] not in BARRIERS \
+                or self.barrier_order[0] == self.barrier_order[1]:
+            raise InputError("barrier_order", f"two different barriers of {', '.join(BARRIERS)}, "
+                                              f"got {self.barrier_order!r}")
         if self.ipopt_options.get("mu_strategy", "adaptive") == "adaptive" and "mu_init" not in self.ipopt_options:
-            self.ipopt_options.update(FROM_BASELINE_OPTIONS)
+            self._use_barrier(self.barrier_order[0])
             self.divergence_watch = DivergenceWatch()
             return True
         return False
 
-    def adaptive_barrier_after(self, failed: "Solution", folder: str) -> None:
-        """Go back to IPOPT's adaptive barrier after a ``FROM_BASELINE_OPTIONS`` solve that
-        did not converge; the next solution records the failed attempt (its status,
-        iterations, objective and the folder its files were kept in)."""
+    def _use_barrier(self, kind: str) -> None:
         for key in FROM_BASELINE_OPTIONS:
             self.ipopt_options.pop(key, None)
-        self.ipopt_options["mu_strategy"] = "adaptive"
+        self.ipopt_options.update(FROM_BASELINE_OPTIONS if kind == "monotone" else {"mu_strategy": "adaptive"})
+
+    def fallback_barrier_after(self, failed: "Solution", folder: str) -> None:
+        """Switch to the second barrier of ``barrier_order`` after a first attempt from the
+        baseline that did not converge; the next solution records the failed attempt (its
+        status, iterations, objective and the folder its files were kept in)."""
+        self._use_barrier(self.barrier_order[1])
         self.divergence_watch = None
         self.barrier_fallback_from = {"mu_strategy": failed.barrier.get("mu_strategy", "?"),
                                       "status": failed.status, "iterations": failed.iterations,

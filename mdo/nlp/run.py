@@ -403,25 +403,25 @@ def optimize_from_baseline(problem: Problem, start, solve, *, on_fallback=None,
     """The second stage of DESIGN rule 7's continuation, with its fallback.
 
     ``start()`` puts the starting point into ``problem`` (the converged baseline's mission,
-    plus any initial values of the caller); ``solve(adaptive) -> Solution`` solves it.
-    The first attempt uses the monotone barrier of ``Problem.start_from_baseline`` (unless
-    the problem chose its own barrier).  If it ends without an optimum -- not
-    interrupted, and not at an iteration limit the caller set when
-    ``iteration_limit_is_final`` -- ``on_fallback(failed)`` runs (``mdo run`` moves the
-    attempt's files aside), and the second attempt starts again from ``start()`` with
-    IPOPT's adaptive barrier (``Problem.adaptive_barrier_after``; the new solution's
-    ``barrier["fallback_from"]`` records the failed attempt).  ``mdo run`` and the
-    robustness study share this one policy."""
+    plus any initial values of the caller); ``solve(fallback) -> Solution`` solves it.
+    The first attempt uses the first barrier of ``problem.barrier_order`` (monotone unless
+    the problem chose another; ``Problem.start_from_baseline``), unless the problem set its
+    own barrier.  If it ends without an optimum -- not interrupted, and not at an iteration
+    limit the caller set when ``iteration_limit_is_final`` -- ``on_fallback(failed)`` runs
+    (``mdo run`` moves the attempt's files aside, into a folder named after its barrier), and
+    the second attempt starts again from ``start()`` with the other barrier
+    (``Problem.fallback_barrier_after``; the new solution's ``barrier["fallback_from"]``
+    records the failed attempt).  ``mdo run`` and the robustness study share this one policy."""
     start()
-    monotone = problem.start_from_baseline()
+    first = problem.start_from_baseline()
     sol = solve(False)
-    retry = (monotone and not sol.success and sol.status not in INTERRUPT_STATUS
+    retry = (first and not sol.success and sol.status not in INTERRUPT_STATUS
              and not (iteration_limit_is_final and sol.status == "Maximum_Iterations_Exceeded"))
     if not retry:
         return sol
     if on_fallback is not None:
         on_fallback(sol)
-    problem.adaptive_barrier_after(sol, "monotone")
+    problem.fallback_barrier_after(sol, problem.barrier_order[0])
     start()
     return solve(True)
 

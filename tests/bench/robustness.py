@@ -48,8 +48,8 @@ def _draw(probe, rng, spread, factor=None):
 
 
 def _optimize(module, warm, start=None, logs=None):
-    """Stage 2 as ``mdo run``: the monotone barrier from the baseline (unless the problem chose
-    its own barrier), the adaptive barrier if that does not converge (``mdo.nlp.run.optimize_from_baseline``, shared with the CLI)."""
+    """Stage 2 as ``mdo run``: the problem's first barrier from the baseline (monotone unless it
+    chose another), the other barrier if that does not converge (``mdo.nlp.run.optimize_from_baseline``, shared with the CLI)."""
     op = module.build(analysis=False)
 
     def from_start():
@@ -57,8 +57,8 @@ def _optimize(module, warm, start=None, logs=None):
         for k, val in (start or {}).items():
             op.set_initial(k, val)
 
-    def solve(adaptive):
-        log = None if logs is None else logs / f"optimization{'_adaptive' if adaptive else ''}.log"
+    def solve(fallback):
+        log = None if logs is None else logs / f"optimization{'_' + op.barrier_order[1] if fallback else ''}.log"
         return op.solve(verbose=False, log_path=log)
 
     return optimize_from_baseline(op, from_start, solve)
@@ -103,8 +103,8 @@ def _write_report(args, rows) -> list:
                 f"the drawn design" if args.from_baseline else
                 "two-stage continuation per start (mission analysis at the drawn design, then the optimization "
                 "warm-started from it)")
-             + "; the monotone barrier first (unless the problem chose its own barrier), the adaptive barrier if it does "
-             "not converge, as `mdo run`.  "
+             + "; the problem's first barrier (monotone unless it chose adaptive first), the other barrier if that "
+             "does not converge, as `mdo run`.  "
              f"Produced by `python tests/bench/robustness.py {' '.join(sys.argv[1:])}` (each start in its own "
              "process" + (f", killed after {args.timeout:g} s" if args.timeout else "") + ").", "",
              f"**{len(ok)} of {len(rows)} converged** (IPOPT Solve_Succeeded)."]
@@ -141,7 +141,8 @@ def _row_of(i, s_an, s, design, wall, start) -> list:
     e = s.summary_values().get("battery_energy_kWh", float("nan"))
     an_status, an_it = (s_an.status, s_an.iterations) if s_an is not None else ("(baseline's mission)", 0)
     fb = s.barrier.get("fallback_from")
-    it = f"{fb['iterations']} monotone + {s.iterations} adaptive" if fb else str(s.iterations)
+    it = f"{fb['iterations']} {fb['mu_strategy']} + {s.iterations} {s.barrier.get('mu_strategy', '?')}" if fb \
+        else str(s.iterations)
     return [i, an_status, an_it, s.status, it, e, wall,
             {k: np.asarray(v, float).tolist() for k, v in design.items()},
             {k: np.asarray(v, float).tolist() for k, v in start.items()}]
