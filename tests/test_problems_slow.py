@@ -20,8 +20,8 @@ def _run(*args):
 
 
 @pytest.mark.parametrize("problem", ["ga2p", "ga8p", pytest.param("ttw", marks=pytest.mark.xfail(
-    strict=True, reason="the TTW's baseline analysis does not converge from the problem's own guess (2026-12-06: "
-                        "dual infeasibility 6e7 at iteration 53); from a converged baseline the optimization does, "
+    strict=True, reason="the TTW's baseline analysis does not converge from the problem's own guess (tried "
+                        "2026-12-06: dual infeasibility 6e7 at iteration 53, stopped there); from a converged baseline the optimization does, "
                         "in 75 iterations (results/ttw/README.md, issue 20 item 2)"))])
 def test_baseline_analysis_and_optimization(tmp_path, problem):
     """One `mdo run`: the baseline analysis (design frozen) into OUT/analysis, then the
