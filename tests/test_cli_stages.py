@@ -164,6 +164,32 @@ def test_divergence_watch_reads_the_log_as_written(tmp_path):
     assert DivergenceWatch().check(tmp_path / "missing.log", 500) is None
 
 
+def test_divergence_watch_gives_up_a_barrier_stalled_at_its_start(tmp_path):
+    """An adaptive barrier still at mu 0.1 (lg -1.0) for 20 iterations after iteration 20 is given
+    up (the TTW from a perturbed design, 2026-12-06); one that leaves it, or a monotone barrier at
+    mu 1e-4, is not."""
+    from mdo.nlp.ipopt import Diverging, DivergenceWatch
+
+    log = tmp_path / "ipopt.log"
+    head = "iter    objective    inf_pr   inf_du lg(mu)  ||d||  lg(rg) alpha_du alpha_pr  ls\n"
+
+    def write(lg_mu):
+        log.write_text(head + "".join(f"{i:4d}  1.0e+00 1.0e-01 1.00e+02 {m:5.1f} 1.0e+00    -  1.0e+00 1.0e-02h  1\n"
+                                      for i, m in enumerate(lg_mu)))
+
+    w = DivergenceWatch()
+    write([-1.0] * 40)
+    w.check(log, 39)                        # iterations 20-39: not all after iteration 20
+    write([-1.0] * 41)
+    with pytest.raises(Diverging):
+        w.check(log, 40)
+    assert "lg(mu) >= -1.2" in w.reason and "iteration 40" in w.reason
+    write([-1.0] * 50 + [-1.6] + [-1.0] * 10)  # left it within the last 20
+    DivergenceWatch().check(log, 60)
+    write([-4.0] * 61)                         # a monotone barrier at mu 1e-4
+    DivergenceWatch().check(log, 60)
+
+
 def test_an_optimization_starts_from_a_given_baseline_folder(tmp_path, capsys):
     """--from-baseline DIR: stage 1 is the user's converged analysis, copied (the original
     untouched); the optimization then equals the one that solved its own baseline."""

@@ -71,35 +71,55 @@ class Diverging(RuntimeError):
 
 @dataclass
 class DivergenceWatch:
-    """Give up a solve whose dual infeasibility has left for good: after iteration
-    ``after_iter``, ``run`` consecutive iterations with IPOPT's (scaled) ``inf_du`` above
-    ``inf_du_max``.  Read from the IPOPT log file as written so far: IPOPT writes it in
-    blocks, so the watch may see the last iterations late (measured: the previous line on
-    a small problem, up to 4 kB, about 40 iterations, on the TTW).  For the monotone attempt from the baseline, which has a
-    fallback (``mdo run``): GA-2P at 170 mph spent 500 iterations and 675 s wandering with
-    inf_du up to 1e6 before the fallback converged in 14; the TTW met its constraints at
-    iteration 168 and then wandered 130 iterations with inf_du 1e4-1e13.  The committed
-    converged runs stay below it (largest inf_du after iteration 50: 3.9e3, GA-2P's
-    block-time free trajectory, 281 iterations)."""
+    """Give up a solve that has left for good, read from the IPOPT log file as written so far
+    (IPOPT writes it in blocks, so the watch may see the last iterations late; measured: the
+    previous line on a small problem, up to 4 kB, about 40 iterations, on the TTW).  For the
+    first attempt from the baseline, which has a fallback (``mdo run``).  Two signs:
+
+    * **the duals run away**: after iteration ``after_iter``, ``run`` consecutive iterations
+      with IPOPT's (scaled) ``inf_du`` above ``inf_du_max``.  GA-2P at 170 mph spent 500
+      iterations and 675 s wandering with inf_du up to 1e6 before the fallback converged in
+      14; the TTW met its constraints at iteration 168 and then wandered 130 iterations with
+      inf_du 1e4-1e13.  The committed converged runs stay below it (largest inf_du after
+      iteration 50: 3.9e3, GA-2P's block-time free trajectory, 281 iterations);
+    * **the barrier stalls at its start**: after iteration ``mu_after_iter``, ``mu_run``
+      consecutive iterations with lg(mu) at or above ``lg_mu_stall`` (an adaptive barrier still
+      at IPOPT's initial mu 0.1: its free mode never took hold).  The TTW from a design drawn
+      within +-15 % (2026-12-06, robustness start 0) held lg(mu) = -1.0 from iteration 5 to 126
+      with inf_du growing from 1e2 to 1e6; the committed adaptive runs leave it within a few
+      iterations (largest lg(mu) after iteration 30: -3.3, and -1.6 to 1.1 for at most 10
+      iterations in a row in the untrimmed TTW's 260-iteration fallback).  A monotone attempt
+      (mu 1e-4) never meets it."""
 
     after_iter: int = 100
     inf_du_max: float = 1e4
     run: int = 10
+    mu_after_iter: int = 20
+    lg_mu_stall: float = -1.2
+    mu_run: int = 20
     reason: str | None = None
 
     def check(self, log_path, iteration: int) -> None:
-        if iteration < self.after_iter + 1:
+        if iteration < min(self.after_iter, self.mu_after_iter) + 1:
             return
-        rows = _last_inf_du(log_path, self.run)
-        if len(rows) == self.run and min(du for _, du in rows) > self.inf_du_max:
-            it, du = rows[-1]
+        rows = _last_iterations(log_path, max(self.run, self.mu_run))
+        du_rows, mu_rows = rows[-self.run:], rows[-self.mu_run:]
+        if iteration > self.after_iter and len(du_rows) == self.run and min(r[1] for r in du_rows) > self.inf_du_max:
+            it, du, _ = du_rows[-1]
             self.reason = (f"dual infeasibility above {self.inf_du_max:g} for {self.run} iterations "
                            f"after iteration {self.after_iter} (last {du:.1e} at iteration {it})")
             raise Diverging(self.reason)
+        if (iteration > self.mu_after_iter and len(mu_rows) == self.mu_run
+                and min(r[2] for r in mu_rows) >= self.lg_mu_stall and mu_rows[0][0] > self.mu_after_iter):
+            it, du, mu = mu_rows[-1]
+            self.reason = (f"barrier parameter at lg(mu) >= {self.lg_mu_stall:g} for {self.mu_run} iterations "
+                           f"after iteration {self.mu_after_iter} (lg(mu) {mu:g}, dual infeasibility {du:.1e} "
+                           f"at iteration {it})")
+            raise Diverging(self.reason)
 
 
-def _last_inf_du(log_path, n: int) -> list:
-    """(iteration, inf_du) of the last ``n`` iteration lines of an IPOPT log (fewer if not yet written)."""
+def _last_iterations(log_path, n: int) -> list:
+    """(iteration, inf_du, lg(mu)) of the last ``n`` iteration lines of an IPOPT log (fewer if not yet written)."""
     try:
         with open(log_path, "rb") as f:
             f.seek(0, os.SEEK_END)
@@ -110,9 +130,9 @@ def _last_inf_du(log_path, n: int) -> list:
     out = []
     for line in lines:
         tok = line.split()
-        if len(tok) >= 4 and tok[0].rstrip("r").isdigit():
+        if len(tok) >= 5 and tok[0].rstrip("r").isdigit():
             with contextlib.suppress(ValueError):
-                out.append((int(tok[0].rstrip("r")), float(tok[3])))
+                out.append((int(tok[0].rstrip("r")), float(tok[3]), float(tok[4])))
     return out[-n:]
 
 
