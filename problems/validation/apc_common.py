@@ -214,12 +214,9 @@ def _pitch_lines(prop: Prop) -> list:
              "| rpm | " + " | ".join(f"J {lo:.1f}-{hi:.1f}: d pitch, CP err before -> after" for lo, hi in
                                     zip(J_BANDS[:-1], J_BANDS[1:])) + " |", "|---|" + "---|" * (len(J_BANDS) - 1)]
     for rpm in np.unique(d["rpm"]):
-        cells = []
-        for lo, hi in zip(J_BANDS[:-1], J_BANDS[1:]):
-            s = (d["rpm"] == rpm) & (d["J"] > lo) & (d["J"] <= hi)
-            cells.append("-" if not s.any() else f"{np.mean(a['extra_deg'][s]):+.2f} deg, "
-                                                 f"{100 * np.mean(a['eCP0'][s]):+.0f} -> {100 * np.mean(a['eCP'][s]):+.0f} %")
-        lines.append(f"| {int(rpm)} | " + " | ".join(cells) + " |")
+        lines.append(f"| {int(rpm)} | " + _band_cells(d, rpm, lambda s: (
+            f"{np.mean(a['extra_deg'][s]):+.2f} deg, "
+            f"{100 * np.mean(a['eCP0'][s]):+.0f} -> {100 * np.mean(a['eCP'][s]):+.0f} %")) + " |")
     return lines
 
 
@@ -282,14 +279,21 @@ def _band_lines(m: dict) -> list:
              + " |", "|---|---|" + "---|" * (len(J_BANDS) - 1)]
     dcp = np.asarray(m["res"]["CP"]).ravel() - d["CP"]
     for rpm in np.unique(d["rpm"]):
-        cells = []
-        for a, b in zip(J_BANDS[:-1], J_BANDS[1:]):
-            s = (d["rpm"] == rpm) & (d["J"] > a) & (d["J"] <= b)
-            cells.append("-" if not s.any() else f"{100 * np.mean(m['eCT'][s]):+.0f} %, {100 * np.mean(m['eCP'][s]):+.0f} %, "
-                                                 f"{np.mean(dcp[s]):+.4f} ({int(s.sum())})")
         r = d["J"][d["rpm"] == rpm]
-        lines.append(f"| {int(rpm)} | {r.min():.2f}-{r.max():.2f} | " + " | ".join(cells) + " |")
+        lines.append(f"| {int(rpm)} | {r.min():.2f}-{r.max():.2f} | " + _band_cells(d, rpm, lambda s: (
+            f"{100 * np.mean(m['eCT'][s]):+.0f} %, {100 * np.mean(m['eCP'][s]):+.0f} %, "
+            f"{np.mean(dcp[s]):+.4f} ({int(s.sum())})")) + " |")
     return lines
+
+
+def _band_cells(d, rpm: float, cell) -> str:
+    """One run's table cells: ``cell(mask)`` for each J band of ``J_BANDS`` ("-" where the run has
+    no point in the band), joined with " | "."""
+    out = []
+    for lo, hi in zip(J_BANDS[:-1], J_BANDS[1:]):
+        s = (d["rpm"] == rpm) & (d["J"] > lo) & (d["J"] <= hi)
+        out.append(cell(s) if s.any() else "-")
+    return " | ".join(out)
 
 
 def write_outputs(prop: Prop, out_dir: Path = OUT_DIR, with_sensitivity: bool = True) -> dict:
