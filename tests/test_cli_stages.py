@@ -19,6 +19,15 @@ def _summary(folder):
     return json.loads((folder / "summary.json").read_text())
 
 
+def _run_polar(out, capsys):
+    """``mdo run`` of the polar GA problem with its wing area free, into ``out``; asserts exit 0."""
+    from mdo import cli
+
+    code = cli.main(["run", str(POLAR), "-o", "design_wing_area=true", "--out", str(out), "--quiet"])
+    assert code == 0, capsys.readouterr().err
+    return out
+
+
 def test_optimization_runs_its_baseline_first(tmp_path):
     out = tmp_path / "run"
     r = _mdo("run", POLAR, "-o", "design_wing_area=true", "--out", out, "--quiet")
@@ -67,9 +76,7 @@ def test_a_failed_monotone_optimization_is_retried_with_the_adaptive_barrier(tmp
     from mdo.nlp import ipopt
 
     monkeypatch.setitem(ipopt.FROM_BASELINE_OPTIONS, "max_cpu_time", 1e-6)
-    out = tmp_path / "run"
-    code = cli.main(["run", str(POLAR), "-o", "design_wing_area=true", "--out", str(out), "--quiet"])
-    assert code == 0, capsys.readouterr().err
+    out = _run_polar(tmp_path / "run", capsys)
     opt, failed = _summary(out), _summary(out / "monotone")
     assert failed["status"] == "Maximum_CpuTime_Exceeded" and failed["barrier"]["mu_strategy"] == "monotone"
     assert opt["status"] == "Solve_Succeeded"
@@ -91,14 +98,11 @@ def test_a_wandering_monotone_attempt_is_given_up_early(tmp_path, monkeypatch, c
     """The DivergenceWatch stops the monotone attempt (here at once: a watch that any dual
     infeasibility trips) instead of letting it run to its iteration limit; the fallback
     then converges and summary.json says why the first attempt stopped."""
-    from mdo import cli
     from mdo.nlp import ipopt, problem as problem_mod
 
     monkeypatch.setattr(problem_mod, "DivergenceWatch",
                         lambda: ipopt.DivergenceWatch(after_iter=1, inf_du_max=-1.0, run=1))
-    out = tmp_path / "run"
-    code = cli.main(["run", str(POLAR), "-o", "design_wing_area=true", "--out", str(out), "--quiet"])
-    assert code == 0, capsys.readouterr().err
+    out = _run_polar(tmp_path / "run", capsys)
     opt, failed = _summary(out), _summary(out / "monotone")
     assert failed["status"] == "User_Requested_Stop" and failed["iterations"] <= 3
     assert "dual infeasibility above -1" in failed["stopped_because"]
@@ -111,7 +115,6 @@ def test_a_problem_may_try_the_adaptive_barrier_first(tmp_path, monkeypatch, cap
     """Problem.barrier_order = ("adaptive", "monotone") (the TTW's): the adaptive attempt is the
     watched first one; when it fails (here the watch trips at once) its files are kept in
     adaptive/ and the monotone barrier converges from the baseline."""
-    from mdo import cli
     from mdo.nlp import ipopt, problem as problem_mod
 
     first_attempt = problem_mod.Problem.start_from_baseline
@@ -123,9 +126,7 @@ def test_a_problem_may_try_the_adaptive_barrier_first(tmp_path, monkeypatch, cap
     monkeypatch.setattr(problem_mod.Problem, "start_from_baseline", adaptive_first)
     monkeypatch.setattr(problem_mod, "DivergenceWatch",
                         lambda: ipopt.DivergenceWatch(after_iter=1, inf_du_max=-1.0, run=1))
-    out = tmp_path / "run"
-    code = cli.main(["run", str(POLAR), "-o", "design_wing_area=true", "--out", str(out), "--quiet"])
-    assert code == 0, capsys.readouterr().err
+    out = _run_polar(tmp_path / "run", capsys)
     opt, failed = _summary(out), _summary(out / "adaptive")
     assert failed["status"] == "User_Requested_Stop" and failed["barrier"]["mu_strategy"] == "adaptive"
     assert opt["status"] == "Solve_Succeeded"
