@@ -3,6 +3,8 @@ reports.  Sits on top of the disciplines (like ``cli``); problem files call it a
 building their vehicle and mission."""
 from __future__ import annotations
 
+import re
+
 from .core.units import KWH
 from .plots import figure_report
 from .vehicle.reports import add_vehicle_reports
@@ -76,7 +78,8 @@ def airframe_variant(cfg, motor_model: str = "pmsm", sections: str = "as_defined
     of the semispan; 100: in effect strength alone).  The defaults return ``cfg``'s own models."""
     from dataclasses import replace
     free = sections == "free_transition"
-    strip = (lambda name: name.split("@", 1)[0]) if free else (lambda name: name)
+    # every section's transition setting, also in a radial distribution ("A@xtr=0.1:0.35:B@xtr=0.1")
+    strip = (lambda name: re.sub(r"@[^:;+]*", "", name)) if free else (lambda name: name)
     groups = tuple(replace(g, airfoil=strip(g.airfoil), motor=replace(g.motor, model=motor_model))
                    for g in cfg.rotor_groups)
     wings = tuple(replace(w, airfoil=strip(w.airfoil)) for w in cfg.wings)

@@ -150,13 +150,15 @@ def inflow_components(speed_mps, incidence_rad):
 
 
 def station_physics(phi, r, chord, theta, vx, vy, rho, mu, a_sound, blades, r_tip, r_hub, sec,
-                    tip_loss=True, hub_loss=True):
+                    tip_loss=True, hub_loss=True, x_sections=None):
     """Residual and loads at blade elements, elementwise (CasADi or NumPy).
 
     Arguments are broadcast elementwise: ``phi`` inflow angle [rad], ``r`` radius
     [m], ``chord`` [m], ``theta`` blade angle incl. pitch [rad], ``vx`` axial and
     ``vy`` tangential inflow [m/s], ``rho`` [kg/m^3], ``mu`` [Pa s], ``a_sound``
-    [m/s], ``blades``, ``r_tip``/``r_hub`` [m], ``sec`` the section object.
+    [m/s], ``blades``, ``r_tip``/``r_hub`` [m], ``sec`` the section object;
+    ``x_sections``: numeric r/R of the elements where a radial distribution of
+    sections is read (None: ``r / r_tip``, as an expression).
     Returns a dict (module docstring for the equations).
     """
     lib = ca if any(isinstance(x, (ca.SX, ca.MX, ca.DM)) for x in
@@ -168,12 +170,13 @@ def station_physics(phi, r, chord, theta, vx, vy, rho, mu, a_sound, blades, r_ti
     w0 = lib.sqrt(vx * vx + vy * vy)
     reynolds = rho * w0 * chord / mu
     mach = w0 / a_sound
+    x = r / r_tip if x_sections is None else x_sections
     if getattr(sec, "rotational", False):     # stall delay needs c/r and Omega R / |V_tip|
         vtip = vy * r_tip / r
-        cl, cd = section_coefficients(sec, alpha, reynolds, mach, r / r_tip, chord / r,
+        cl, cd = section_coefficients(sec, alpha, reynolds, mach, x, chord / r,
                                       vtip / lib.sqrt(vx * vx + vtip * vtip))
     else:
-        cl, cd = section_coefficients(sec, alpha, reynolds, mach, r / r_tip)
+        cl, cd = section_coefficients(sec, alpha, reynolds, mach, x)
     cn = cl * cphi - cd * sphi
     ct = cl * sphi + cd * cphi
     acos = ca.acos if lib is ca else np.arccos
@@ -287,7 +290,8 @@ def _rotor_totals(x, r, dr, e, ph, n, n_azimuth):
 
 
 def bemt_function(sec, n_stations: int = 20, n_azimuth: int = 1, *, outputs: str | tuple = "nlp",
-                  tip_loss: bool = True, hub_loss: bool = True, name: str = "bemt") -> ca.Function:
+                  tip_loss: bool = True, hub_loss: bool = True, name: str = "bemt",
+                  hub_fraction: float | None = None) -> ca.Function:
     """The BEMT of one rotor at one operating point as an SX ``casadi.Function``.
 
     Inputs (``INPUT_NAMES``; shapes in brackets, n = n_stations, m = n_azimuth):
@@ -316,6 +320,12 @@ def bemt_function(sec, n_stations: int = 20, n_azimuth: int = 1, *, outputs: str
 
     The Function is pure SX (section calls included), meant to be mapped over
     mission nodes: ``f.map(K)`` with ``phi_rad`` as an (n*m, K) matrix.
+
+    ``hub_fraction`` (a number): the rotors this Function serves have that hub, so a
+    radial distribution of sections is placed at the stations' r/R when the graph is
+    built and each section evaluated only where it carries weight (one section call
+    per element instead of one per section).  The ``hub_fraction`` input must then be
+    that number; None: sections placed at ``r/R`` as an expression of the input.
     """
     n, m = int(n_stations), int(n_azimuth)
     if m < 1:
@@ -323,9 +333,13 @@ def bemt_function(sec, n_stations: int = 20, n_azimuth: int = 1, *, outputs: str
     x = _symbols(n, m)
     r, dr, e = _elements(x, n, m)
     R = x["radius_m"]
+    x_sec = None
+    if hub_fraction is not None and getattr(sec, "spanwise", False):
+        h = float(hub_fraction)
+        x_sec = np.tile(h + (1.0 - h) * station_layout(n)[0], m)
     ph = station_physics(x["phi_rad"], e["r"], e["chord"], e["theta"], x["v_axial_mps"], e["vy"],
                          x["rho_kgpm3"], x["mu_Pas"], x["a_mps"], x["blades"], R,
-                         R * x["hub_fraction"], sec, tip_loss=tip_loss, hub_loss=hub_loss)
+                         R * x["hub_fraction"], sec, tip_loss=tip_loss, hub_loss=hub_loss, x_sections=x_sec)
     out = _rotor_totals(x, r, dr, e, ph, n, m)
     out["residual"] = ph["residual"]
     if outputs == "nlp":

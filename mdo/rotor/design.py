@@ -66,7 +66,13 @@ DESIGN_INPUTS = ("target", "speed_mps", "radius_m", "omega_radps", "cl_design", 
 _CACHE: dict = {}
 
 
-def _design_state(sec, n, w, alpha, p, tip_loss=True, hub_loss=True):
+def _section_hub(sec, hub_fraction):
+    """The hub fraction at which a radial distribution of sections is placed when a graph
+    is built (``bemt_function``'s ``hub_fraction``); None for a section that does not vary."""
+    return float(hub_fraction) if hub_fraction is not None and getattr(sec, "spanwise", False) else None
+
+
+def _design_state(sec, n, w, alpha, p, tip_loss=True, hub_loss=True, x_sections=None):
     """All design quantities for displacement velocity ``w`` and section angles ``alpha``."""
     V, R, Om, cl_d = p["speed_mps"], p["radius_m"], p["omega_radps"], p["cl_design"]
     rho, mu, a_s, h, B = p["rho_kgpm3"], p["mu_Pas"], p["a_mps"], p["hub_fraction"], p["blades"]
@@ -88,7 +94,7 @@ def _design_state(sec, n, w, alpha, p, tip_loss=True, hub_loss=True):
     u0 = 0.5 * w * cphi * cphi
     c0 = circ / cl_d / ((V + u0) / sphi)
     reynolds = rho * w0 * c0 / mu
-    cl, cd = section_coefficients(sec, alpha, reynolds, mach, xi)
+    cl, cd = section_coefficients(sec, alpha, reynolds, mach, xi if x_sections is None else x_sections)
     eps = cd / cl
     u = 0.5 * w * cphi * cphi * (1.0 - eps * sphi / cphi)   # A-L Eq. 17 (a V)
     W = (V + u) / sphi
@@ -110,7 +116,7 @@ def _params_sym():
 
 
 def adkins_liebeck_function(sec, n_stations: int = 20, *, target: str = "thrust",
-                            tip_loss=True, hub_loss=True) -> ca.Function:
+                            tip_loss=True, hub_loss=True, hub_fraction: float | None = None) -> ca.Function:
     """The A-L design as residuals: an SX Function.
 
     Inputs ``DESIGN_INPUTS`` + ``w_mps`` (displacement velocity) + ``alpha_rad``
@@ -124,8 +130,11 @@ def adkins_liebeck_function(sec, n_stations: int = 20, *, target: str = "thrust"
     design inflow angles = the BEMT solution at the design point, a good NLP
     initial guess), ``thrust_N``, ``power_W``, ``torque_Nm``, ``eta`` (T V/P),
     ``reynolds`` [n], ``mach`` [n], ``gamma_m2ps`` [n].
+    ``hub_fraction`` (a number): a radial distribution of sections is placed at the
+    stations when the graph is built (as ``bemt_function``'s); the input must equal it.
     """
-    key = (id(sec), "al", n_stations, target, tip_loss, hub_loss)
+    hub_fraction = _section_hub(sec, hub_fraction)
+    key = (id(sec), "al", n_stations, target, tip_loss, hub_loss, hub_fraction)
     if key in _CACHE:
         return _CACHE[key][0]
     if target not in ("thrust", "power"):
@@ -133,7 +142,8 @@ def adkins_liebeck_function(sec, n_stations: int = 20, *, target: str = "thrust"
     p = _params_sym()
     w = ca.SX.sym("w_mps")
     alpha = ca.SX.sym("alpha_rad", n_stations)
-    st = _design_state(sec, n_stations, w, alpha, p, tip_loss, hub_loss)
+    x_sec = None if hub_fraction is None else hub_fraction + (1.0 - hub_fraction) * station_layout(n_stations)[0]
+    st = _design_state(sec, n_stations, w, alpha, p, tip_loss, hub_loss, x_sec)
     achieved = st["thrust"] if target == "thrust" else st["power"]
     res = ca.vertcat(achieved / p["target"] - 1.0, st["cl"] - p["cl_design"])
     eta = st["thrust"] * p["speed_mps"] / st["power"]
@@ -219,11 +229,12 @@ def _design_point(*, radius_m, speed_mps, cl_design, thrust_N, power_W, omega_ra
     return p, target
 
 
-def _residual_and_jacobian(sec, n_stations: int, target: str) -> ca.Function:
+def _residual_and_jacobian(sec, n_stations: int, target: str, hub_fraction=None) -> ca.Function:
     """``(DESIGN_INPUTS, z) -> (residual, d residual/dz)`` of the A-L design, cached."""
-    key = (id(sec), "al_jac", n_stations, target)
+    hub_fraction = _section_hub(sec, hub_fraction)
+    key = (id(sec), "al_jac", n_stations, target, hub_fraction)
     if key not in _CACHE:
-        f = adkins_liebeck_function(sec, n_stations, target=target)
+        f = adkins_liebeck_function(sec, n_stations, target=target, hub_fraction=hub_fraction)
         z = ca.SX.sym("z", n_stations + 1)
         args = [ca.SX.sym(k) for k in DESIGN_INPUTS]
         res = f(*args, z[0], z[1:])[0]
@@ -297,10 +308,10 @@ def adkins_liebeck(*, blades: int, radius_m: float, speed_mps: float, airfoil="n
                               power_W=power_W, omega_radps=omega_radps, rpm=rpm, tip_mach=tip_mach,
                               hub_fraction=hub_fraction, altitude_m=altitude_m, blades=blades)
     sec = make_section(airfoil)
-    f = adkins_liebeck_function(sec, n_stations, target=target)
+    f = adkins_liebeck_function(sec, n_stations, target=target, hub_fraction=hub_fraction)
     pargs = [p[k] for k in DESIGN_INPUTS]
     w0, a0 = design_guess(sec, p, n_stations, target)
-    z, r, it = _damped_newton(_residual_and_jacobian(sec, n_stations, target), pargs, np.r_[w0, a0],
+    z, r, it = _damped_newton(_residual_and_jacobian(sec, n_stations, target, hub_fraction), pargs, np.r_[w0, a0],
                               tol, max_iter)
     if np.linalg.norm(r, np.inf) > 1e-8:
         raise InputError("design", f"Adkins-Liebeck design did not converge (residual "
@@ -340,14 +351,15 @@ def _symbolic_guess(sec, n: int, p: dict, target: str):
 
 
 def adkins_liebeck_unrolled(sec, n_stations: int = 20, *, n_newton: int = 8, target="thrust",
-                            tip_loss=True, hub_loss=True) -> ca.Function:
+                            tip_loss=True, hub_loss=True, hub_fraction: float | None = None) -> ca.Function:
     """A-L design as an explicit SX Function: ``n_newton`` full Newton steps on the
     (n+1) residuals from ``design_guess``'s formulas, unrolled.  Inputs
     ``DESIGN_INPUTS``; outputs as ``adkins_liebeck_function`` plus ``w_mps``.
     Differentiable end to end (derivatives of the unrolled map, exact once the
     iteration has converged).  Larger graph than the residual form; kept for
     comparison (``adkins_liebeck_implicit`` is the one the aircraft use)."""
-    f = adkins_liebeck_function(sec, n_stations, target=target, tip_loss=tip_loss, hub_loss=hub_loss)
+    f = adkins_liebeck_function(sec, n_stations, target=target, tip_loss=tip_loss, hub_loss=hub_loss,
+                                hub_fraction=hub_fraction)
     p = _params_sym()
     w, alpha = _symbolic_guess(sec, n_stations, p, target)
     zs = ca.SX.sym("z", n_stations + 1)
@@ -365,7 +377,7 @@ def adkins_liebeck_unrolled(sec, n_stations: int = 20, *, n_newton: int = 8, tar
 
 
 def adkins_liebeck_implicit(sec, n_stations: int = 20, *, target: str = "thrust", tip_loss=True,
-                            hub_loss=True) -> ca.Function:
+                            hub_loss=True, hub_fraction: float | None = None) -> ca.Function:
     """A-L design as an implicit function of its inputs: an MX Function.
 
     The (n+1) residuals of ``adkins_liebeck_function`` are solved inside the graph by
@@ -383,10 +395,12 @@ def adkins_liebeck_implicit(sec, n_stations: int = 20, *, target: str = "thrust"
     Inputs ``DESIGN_INPUTS`` (by name); outputs as ``adkins_liebeck_function``
     without ``residual``, plus ``w_mps`` and ``alpha_rad`` [n] (the solved unknowns).
     """
-    key = (id(sec), "al_implicit", n_stations, target, tip_loss, hub_loss)
+    hub_fraction = _section_hub(sec, hub_fraction)
+    key = (id(sec), "al_implicit", n_stations, target, tip_loss, hub_loss, hub_fraction)
     if key in _CACHE:
         return _CACHE[key][0]
-    f = adkins_liebeck_function(sec, n_stations, target=target, tip_loss=tip_loss, hub_loss=hub_loss)
+    f = adkins_liebeck_function(sec, n_stations, target=target, tip_loss=tip_loss, hub_loss=hub_loss,
+                                hub_fraction=hub_fraction)
     z = ca.SX.sym("z", n_stations + 1)
     ps = ca.SX.sym("p", len(DESIGN_INPUTS))
     out = f(**{k: ps[i] for i, k in enumerate(DESIGN_INPUTS)}, w_mps=z[0], alpha_rad=z[1:])

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import math
 
+import casadi as ca
 import numpy as np
 
 from ..core.errors import InputError
@@ -131,6 +132,9 @@ class SpanwiseSections:
     """
 
     spanwise = True
+    # stations known when the graph is built (``_coefficients_at``): weights below this
+    # are dropped (a change of the blend by at most 1e-6 of the neighbours' difference)
+    WEIGHT_FLOOR = 1e-6
 
     def __init__(self, sections, changes, width: float = 0.05):
         sections, changes = list(sections), [float(c) for c in changes]
@@ -144,7 +148,7 @@ class SpanwiseSections:
         parts = [str(getattr(sections[0], "name", sections[0]))]
         for c, sec in zip(changes, sections[1:]):
             parts += [f"{c:g}", str(getattr(sec, "name", sec))]
-        self.name = ":".join(parts)
+        self.name = ":".join(parts) + ("" if self.width == 0.05 else f";width={self.width:g}")
         self.alpha0_rad = float(np.mean([float(getattr(sc, "alpha0_rad", 0.0)) for sc in sections]))
 
     def weights(self, x):
@@ -152,11 +156,54 @@ class SpanwiseSections:
         return [s[k] - s[k + 1] for k in range(len(self.sections))]
 
     def coefficients(self, alpha, reynolds, mach=0.0, x=0.5):
+        if _numeric(x):
+            return self._coefficients_at(alpha, reynolds, mach, np.asarray(x.full() if isinstance(x, ca.DM) else x,
+                                                                           float))
         out = None
         for w, sec in zip(self.weights(x), self.sections):
             c = _coefficients(sec, alpha, reynolds, mach)
             out = [w * ci for ci in c] if out is None else [o + w * ci for o, ci in zip(out, c)]
         return tuple(out)
+
+    def station_weights(self, x) -> np.ndarray:
+        """Weights (sections x stations) at numeric ``x = r/R``: below ``WEIGHT_FLOOR``
+        dropped, the rest renormalised to sum 1."""
+        xs = np.atleast_1d(np.asarray(x, float)).ravel()
+        w = np.array([np.broadcast_to(np.asarray(wk, float), xs.shape) for wk in self.weights(xs)])
+        w[w < self.WEIGHT_FLOOR] = 0.0
+        return w / w.sum(axis=0)
+
+    def _coefficients_at(self, alpha, reynolds, mach, x):
+        """The blend at stations whose ``x`` is known when the graph is built (a BEMT or
+        Adkins-Liebeck Function given its hub fraction): each section is evaluated only at
+        the elements where it carries weight, so a blade of K sections costs about one
+        section call per element, not K.  ``x`` has one entry per element (or one for all)."""
+        w = self.station_weights(x)
+        symbolic = any(isinstance(v, (ca.SX, ca.MX)) for v in (alpha, reynolds, mach))
+        if w.shape[1] == 1 or not symbolic:
+            shape = (-1,) + (1,) * max(np.ndim(alpha) - 1, 0)
+            out = None
+            for wk, sec in zip(w, self.sections):
+                if not wk.any():
+                    continue
+                wk = wk[0] if wk.size == 1 else wk.reshape(shape)
+                c = _coefficients(sec, alpha, reynolds, mach)
+                out = [wk * ci for ci in c] if out is None else [o + wk * ci for o, ci in zip(out, c)]
+            return tuple(out)
+        n_el = w.shape[1]
+        pick = (lambda v, idx: v[idx] if isinstance(v, (ca.SX, ca.MX)) and v.numel() == n_el else v)
+        acc = None
+        for wk, sec in zip(w, self.sections):
+            idx = [int(i) for i in np.nonzero(wk)[0]]
+            if not idx:
+                continue
+            c = _coefficients(sec, pick(alpha, idx), pick(reynolds, idx), pick(mach, idx))
+            if acc is None:
+                acc = [[0.0] * n_el for _ in c]
+            for j, cj in enumerate(c):
+                for jj, i in enumerate(idx):
+                    acc[j][i] = acc[j][i] + wk[i] * (cj[jj] if cj.numel() > 1 else cj)
+        return tuple(ca.vertcat(*a) for a in acc)
 
     def cl(self, alpha, reynolds, mach=0.0, x=0.5):
         return self.coefficients(alpha, reynolds, mach, x)[0]
@@ -261,6 +308,11 @@ class RotationalAugmentation:
 
     def __repr__(self):
         return f"RotationalAugmentation({self.sec!r}, {self.model}, drag={self.drag})"
+
+
+def _numeric(x) -> bool:
+    """True when ``x`` is a number or a NumPy array (not a CasADi expression)."""
+    return isinstance(x, (int, float, np.ndarray, np.number)) or (isinstance(x, ca.DM))
 
 
 class _Anchor:
@@ -376,7 +428,9 @@ def section(spec, stall_delay: str | None = None):
     (``"NACA 23012"``, ``"naca4412@ncrit=5"``, ``"clarky@xtr=0.1"``, a coordinate file;
     see ``mdo.airfoil.generate``), or a radial distribution
     ``"A:X1:B[:X2:C ...]"`` (sections A, B, C... changing at r/R = X1, X2, ...; the
-    two-section ``"e63:0.5:clark_y"`` is the familiar blend).  A suffix ``"+snel"`` or
+    two-section ``"e63:0.5:clark_y"`` is the familiar blend), optionally followed by
+    ``";width=W"``, the width in r/R over which one section turns into the next
+    (default 0.05).  A suffix ``"+snel"`` or
     ``"+du_selig"`` (or ``stall_delay=``) adds rotational augmentation
     (``RotationalAugmentation``).  Raises ``InputError("airfoil", ...)`` for unknown names.
     """
@@ -390,6 +444,17 @@ def section(spec, stall_delay: str | None = None):
     if "+" in name:
         base, model = name.rsplit("+", 1)
         return _with_stall_delay(section(base), model.strip().lower())
+    width = None
+    if ";" in name:   # A:X1:B[...];width=W, the blend width in r/R
+        name, opt = (t.strip() for t in name.split(";", 1))
+        key, _, val = opt.partition("=")
+        try:
+            width = float(val)
+        except ValueError:
+            width = None
+        if key.strip() != "width" or width is None or not width > 0 or name.count(":") < 2:
+            raise InputError("airfoil", f"a section distribution's option is ';width=W' (W > 0, in r/R) after "
+                                        f"A:R_OVER_R:B[...], got {spec!r}")
     if name.count(":") >= 2:   # A:X1:B[:X2:C...], a radial distribution of sections
         parts = name.split(":")
         if len(parts) % 2 == 0:
@@ -400,13 +465,15 @@ def section(spec, stall_delay: str | None = None):
             raise InputError("airfoil", f"section distribution is A:R_OVER_R:B[:R_OVER_R:C...], got {name!r}") from exc
         names = [p.strip() for p in parts[0::2]]
         key = ":".join(f"{n}" if i % 2 == 0 else f"{float(n):g}" for i, n in enumerate(parts))
+        w = {} if width is None else {"width": width}
+        key += f";width={width:g}" if w else ""
         if key not in _NAMED:
             if len(names) == 2:
                 if not (0.0 < xs[0] < 1.0):
                     raise InputError("airfoil", f"blend position must lie in (0, 1), got {xs[0]}")
-                _NAMED[key] = SpanwiseBlend(section(names[0]), section(names[1]), xs[0])
+                _NAMED[key] = SpanwiseBlend(section(names[0]), section(names[1]), xs[0], **w)
             else:
-                _NAMED[key] = SpanwiseSections([section(n) for n in names], xs)
+                _NAMED[key] = SpanwiseSections([section(n) for n in names], xs, **w)
         return _NAMED[key]
     if name in _NAMED:
         return _NAMED[name]

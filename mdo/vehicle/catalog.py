@@ -56,7 +56,21 @@ GA_SECTIONS = (0.0, 0.25, 0.5, 0.75, 1.0)
 TRIPPED = "@xtr=0.1"
 GA_WING_AIRFOIL = "NACA_63_412" + TRIPPED
 TAIL_AIRFOIL = "NACA_0015" + TRIPPED
-PROP_AIRFOIL = "NACA_4412" + TRIPPED
+
+# Their thickness falls from root to tip (issue 17 item 5): a blade is a cantilever whose
+# bending moment and centrifugal load grow toward the hub, so the root is thick and the tip
+# thin.  Anchor: the NACA full-scale propeller series names its blades by the thickness ratio
+# at 0.7 R, and the two Betz-loaded blades that reached the highest measured efficiencies
+# (0.915-0.92) carried 0.062 and 0.08 there, the thinner one with the smaller losses at high
+# tip speed (Solomon, NACA TN 2881, 1953: the 10-(3)(062)-045 and 10-(3)(08)-045 propellers;
+# also the 4-(5)(08)-03 of Delano, NACA Report 1012, 1951); inboard, conventional blades
+# thicken into round shanks (Maynard, NACA RM L6L27a, 1947).  Here four sections of the
+# NACA 44xx family, tripped: 18 % inboard of 0.35 R, 12 % to 0.6 R, 8 % to 0.85 R (0.7 R
+# at the series' 0.08) and 6 % at the tip, each changing into the next over 0.005 of the
+# radius (mdo.rotor.SpanwiseSections; the BEMT evaluates at each station only the sections
+# that carry weight there).  Thin tips also stall earlier, which bounds the blade's design cl.
+PROP_AIRFOIL = ":".join(("NACA_4418" + TRIPPED, "0.35", "NACA_4412" + TRIPPED, "0.6", "NACA_4408" + TRIPPED,
+                         "0.85", "NACA_4406" + TRIPPED)) + ";width=0.005"
 
 # Mass calibration (see mass.py): one factor on the regressions' structure, systems and
 # propulsion hardware terms (not battery, not payload, not the wings' bending material).

@@ -69,8 +69,11 @@ class RotorGroupModel:
         self.n_azimuth = int(n_azimuth) if self.tilting else 1
         self.section = section(section_name(group.airfoil))
         self.omega_design = group.design_rpm * u.RPM
-        self.bemt = bemt_function(self.section, self.n_stations, self.n_azimuth, outputs="nlp")
-        self._axial = bemt_function(self.section, self.n_stations, 1, outputs="nlp") if self.n_azimuth > 1 \
+        # the group's hub places a radial distribution of sections at the stations once (bemt_function)
+        self.bemt = bemt_function(self.section, self.n_stations, self.n_azimuth, outputs="nlp",
+                                  hub_fraction=group.hub_fraction)
+        self._axial = bemt_function(self.section, self.n_stations, 1, outputs="nlp",
+                                    hub_fraction=group.hub_fraction) if self.n_azimuth > 1 \
             else self.bemt
         self._baseline_blade = None
 
@@ -134,7 +137,8 @@ class RotorGroupModel:
                      "a_mps": float(atm_d["speed_of_sound_mps"]), "hub_fraction": g.hub_fraction,
                      "blades": g.blades}
         # the blade, solved inside the graph (no blade unknowns: issue 20)
-        self.blade = dict(adkins_liebeck_implicit(self.section, self.n_stations)(**al_inputs))
+        self.blade = dict(adkins_liebeck_implicit(self.section, self.n_stations,
+                                                  hub_fraction=g.hub_fraction)(**al_inputs))
         if rotor_free and stall_margin_cl is not None and stall_margin_cl >= 0.0:
             # the design cl is bounded by stall at each station's Reynolds number, not by a box
             problem.constrain(f"{p} design cl below stall",
