@@ -33,7 +33,8 @@ KEEP = {"summary.json", "summary.md", "energy.md", "mission.csv", "mission_segme
 STEPS = [
     ("0_ours", "ours: tripped sections, drag build-up, PMSM + inverter, every limit", {}),
     ("1_dc_motor", "the paper's DC motor behind a 0.95 ESC", {"motor_model": "dc"}),
-    ("2_free_transition", "free-transition XFOIL polars (wing, tail, propeller)", {"sections": "free_transition"}),
+    ("2_free_transition", "free-transition polars (wing, tail, propeller; XFOIL's, NeuralFoil's at Ncrit 9 for the "
+                          "propeller's 18, 8 and 6 % sections)", {"sections": "free_transition"}),
     ("3_old_allowances", "5 % leakage, nacelles and wing strips at the freestream's q, no cooling drag",
      {"leakage_fraction": 0.05, "nacelle_slipstream": False, "blown_profile_drag": False, "cooling_drag": False}),
     ("4_no_limits", "no operating limits, unbounded swirl credit, no approach drag device",

@@ -91,7 +91,7 @@ from mdo.nlp import Problem
 from mdo.studies import (AIRCRAFT_OPTIONS, AIRFRAME_OPTIONS, TRAJECTORY_OPTIONS, airframe_variant,
                          minimize_battery_energy, trajectory_envelope)
 from mdo.wake import DEFAULT_CORE_REL, DEFAULT_STRIP_SAMPLES
-from mdo.vehicle.aircraft import Aircraft
+from mdo.vehicle.aircraft import Aircraft, DesignBounds
 from mdo.vehicle.catalog import TTW_AILERON_SPAN_ETA, ttw
 
 
@@ -165,7 +165,12 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
         eta = (0.0, 0.0) if not ailerons else (ailerons_from_eta, TTW_AILERON_SPAN_ETA[1])
         cfg = replace(cfg, wings=tuple(replace(w, aileron_span_eta=eta)
                                        if w in cfg.lifting_wings else w for w in cfg.wings))
-    vehicle = Aircraft(cfg, trim=trim, wing_viscous=wing_viscous, blown_profile_drag=blown_profile_drag, n_stations=n_stations, n_azimuth=n_azimuth, wing_strips=wing_strips,
+    # Its rotors hover and cruise, so a blade may be designed for any speed the vehicle flies: the
+    # design-speed box reaches the cruise speed (the default 2 x the baseline's 10 m/s held the
+    # optimum's design speed on 20 m/s at 0.14 kWh per m/s, 2026-12-06, sixteenth session).
+    v_design = cfg.rotor_groups[0].design_speed_mps
+    bounds = DesignBounds(design_speed=(0.05, max(2.0, cruise_speed_mph * MPH / v_design)))
+    vehicle = Aircraft(cfg, bounds=bounds, trim=trim, wing_viscous=wing_viscous, blown_profile_drag=blown_profile_drag, n_stations=n_stations, n_azimuth=n_azimuth, wing_strips=wing_strips,
                        mass_model=mass_model, coupling=coupling, swirl_recovery=swirl_recovery, limits=limits,
                        tip_mach_limit=tip_mach_limit, allow_regeneration=allow_regeneration,
                        design_point_constraints=not analysis, wake_samples=wake_samples, wake_core_rel=wake_core_rel, engine_out=engine_out, fin_sizing=fin_sizing, pitch=pitch, tilt=tilt,

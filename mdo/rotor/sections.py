@@ -312,7 +312,7 @@ class RotationalAugmentation:
 
 def _numeric(x) -> bool:
     """True when ``x`` is a number or a NumPy array (not a CasADi expression)."""
-    return isinstance(x, (int, float, np.ndarray, np.number)) or (isinstance(x, ca.DM))
+    return isinstance(x, (int, float, np.ndarray, np.number, ca.DM))
 
 
 class _Anchor:
