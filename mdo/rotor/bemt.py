@@ -90,7 +90,7 @@ import casadi as ca
 import numpy as np
 
 from ..core.smooth import softplus
-from .geometry import station_layout
+from .geometry import station_layout, station_r_over_R
 from .sections import section_coefficients
 
 __all__ = [
@@ -336,7 +336,7 @@ def bemt_function(sec, n_stations: int = 20, n_azimuth: int = 1, *, outputs: str
     x_sec = None
     if hub_fraction is not None and getattr(sec, "spanwise", False):
         h = float(hub_fraction)
-        x_sec = np.tile(h + (1.0 - h) * station_layout(n)[0], m)
+        x_sec = np.tile(station_r_over_R(n, h), m)
     ph = station_physics(x["phi_rad"], e["r"], e["chord"], e["theta"], x["v_axial_mps"], e["vy"],
                          x["rho_kgpm3"], x["mu_Pas"], x["a_mps"], x["blades"], R,
                          R * x["hub_fraction"], sec, tip_loss=tip_loss, hub_loss=hub_loss, x_sections=x_sec)

@@ -54,7 +54,7 @@ import numpy as np
 from ..core.atmosphere import check_altitude, density, dynamic_viscosity, speed_of_sound
 from ..core.errors import InputError
 from ..airfoil.clmax import fit_clmax
-from .geometry import RotorGeometry, station_layout
+from .geometry import RotorGeometry, station_layout, station_r_over_R
 from .sections import section as make_section, section_coefficients
 
 __all__ = ["adkins_liebeck_function", "adkins_liebeck", "adkins_liebeck_unrolled",
@@ -142,7 +142,7 @@ def adkins_liebeck_function(sec, n_stations: int = 20, *, target: str = "thrust"
     p = _params_sym()
     w = ca.SX.sym("w_mps")
     alpha = ca.SX.sym("alpha_rad", n_stations)
-    x_sec = None if hub_fraction is None else hub_fraction + (1.0 - hub_fraction) * station_layout(n_stations)[0]
+    x_sec = None if hub_fraction is None else station_r_over_R(n_stations, hub_fraction)
     st = _design_state(sec, n_stations, w, alpha, p, tip_loss, hub_loss, x_sec)
     achieved = st["thrust"] if target == "thrust" else st["power"]
     res = ca.vertcat(achieved / p["target"] - 1.0, st["cl"] - p["cl_design"])
@@ -322,8 +322,7 @@ def adkins_liebeck(*, blades: int, radius_m: float, speed_mps: float, airfoil="n
     res = {k: np.array(out[i]).ravel() for i, k in enumerate(f.name_out())}
     for k in ("thrust_N", "power_W", "torque_Nm", "eta"):
         res[k] = float(res[k][0])
-    s, _ = station_layout(n_stations)
-    xi = hub_fraction + (1 - hub_fraction) * s
+    xi = station_r_over_R(n_stations, hub_fraction)
     res.update({
         "w_mps": float(z[0]), "zeta": float(z[0] / speed_mps) if speed_mps > 0 else math.inf,
         "alpha_rad": z[1:], "r_m": xi * radius_m, "r_over_R": xi, "residual_max":
@@ -424,8 +423,7 @@ def station_clmax(sec, n_stations: int, hub_fraction: float) -> list:
     does not vary along the blade."""
     key = (id(sec), "clmax", n_stations, float(hub_fraction))
     if key not in _CACHE:
-        s, _ = station_layout(n_stations)
-        xi = hub_fraction + (1.0 - hub_fraction) * s
+        xi = station_r_over_R(n_stations, hub_fraction)
         if getattr(sec, "spanwise", False):
             fits = [fit_clmax(lambda a, re, x=x: section_coefficients(sec, a, re, 0.0, x)[0], re_range=(3e4, 1e7))
                     for x in xi]

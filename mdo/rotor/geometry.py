@@ -36,6 +36,7 @@ from ..core.errors import InputError
 __all__ = [
     "RotorGeometry",
     "station_layout",
+    "station_r_over_R",
     "read_geometry_csv",
     "write_geometry_csv",
     "DATA_DIR",
@@ -54,6 +55,12 @@ def station_layout(n: int) -> tuple[np.ndarray, np.ndarray]:
     edges = 0.5 * (1.0 - np.cos(np.pi * k / n))
     s = 0.5 * (1.0 - np.cos(np.pi * (np.arange(n) + 0.5) / n))
     return s, np.diff(edges)
+
+
+def station_r_over_R(n: int, hub_fraction: float) -> np.ndarray:
+    """r/R of the ``n`` BEMT stations of a blade whose hub is at ``hub_fraction`` R:
+    ``h + (1 - h) s_i``."""
+    return hub_fraction + (1.0 - hub_fraction) * station_layout(n)[0]
 
 
 def _as_float_array(field_name: str, values) -> np.ndarray:
@@ -208,7 +215,7 @@ class RotorGeometry:
         ``dr_m``, ``chord_m``, ``beta_rad`` (twist without the pitch offset).
         """
         s, ds = station_layout(n)
-        x = self.hub_fraction + (1.0 - self.hub_fraction) * s
+        x = station_r_over_R(n, self.hub_fraction)
         chord = self._interp(self.chord_over_R, x) * self.radius_m
         beta = self._interp(self.beta_rad, x)
         return {
