@@ -132,3 +132,12 @@ def test_sweep_unknown_section_in_distribution_exits_2(capsys):
     i = SWEEP.index("--airfoil")
     code, out, err = _run(SWEEP[:i + 1] + ["naca4412:0.4:nosuch"] + SWEEP[i + 2:], capsys)
     assert code == 2 and "airfoil" in err
+
+
+def test_sweep_accepts_a_distribution_width(capsys):
+    i = SWEEP.index("--airfoil")
+    code, out, err = _run(SWEEP[:i + 1] + ["naca4412:0.4:clark_y:0.8:e63;width=0.01"] + SWEEP[i + 2:], capsys)
+    assert code == 0, err
+    assert len(out.strip().splitlines()) == 6
+    code, out, err = _run(SWEEP[:i + 1] + ["naca4412:0.4:clark_y;width=-1"] + SWEEP[i + 2:], capsys)
+    assert code == 2 and "width" in err

@@ -49,16 +49,17 @@ def _common(args) -> None:
 
 def _airfoil(text):
     """The rotor's section spec: every airfoil name in it ('analytic', a shipped airfoil;
-    blends NAME:R_OVER_R:NAME[:R_OVER_R:NAME...], an optional +MODEL suffix) through the one
+    blends NAME:R_OVER_R:NAME[:R_OVER_R:NAME...][;width=W], an optional +MODEL suffix) through the one
     resolver; the rest is checked by ``mdo.rotor.sections.section``."""
     from ..airfoil.cli import resolve_airfoil
 
     base, plus, suffix = str(text).partition("+")
+    base, semi, option = base.partition(";")       # a distribution's ";width=W"
     parts = base.split(":")
     for i in range(0, len(parts), 2):
         if parts[i].strip().lower() != "analytic":
             parts[i] = resolve_airfoil(parts[i], "--airfoil")
-    return ":".join(parts) + plus + suffix
+    return ":".join(parts) + semi + option + plus + suffix
 
 
 def efficiency_or_none(eta, thrust_N, power_W) -> np.ndarray:
@@ -174,8 +175,10 @@ def register(subparsers) -> None:
                                   description="Propeller and rotor analysis and design.")
     sub = rotor.add_subparsers(dest="rotor_command", metavar="ROTOR_COMMAND")
 
-    airfoil_help = ("section: a shipped airfoil (see 'mdo airfoil list'), 'analytic', or INNER:R_OVER_R:OUTER "
-                    "(a blend of two)")
+    airfoil_help = ("section: a shipped airfoil (see 'mdo airfoil list'), 'analytic', a generated one ('NACA 23012', "
+                    "'naca4412@xtr=0.1'), or a radial distribution A:R_OVER_R:B[:R_OVER_R:C...] with an optional "
+                    "';width=W' (r/R over which one section turns into the next, default 0.05) and '+snel' or "
+                    "'+du_selig' (stall delay)")
 
     def common(p, hub_default, hub_help):
         p.add_argument("--diameter", required=True, metavar="D_M", help="tip diameter, (0, 100] m")
