@@ -425,8 +425,16 @@ def station_clmax(sec, n_stations: int, hub_fraction: float) -> list:
     if key not in _CACHE:
         xi = station_r_over_R(n_stations, hub_fraction)
         if getattr(sec, "spanwise", False):
-            fits = [fit_clmax(lambda a, re, x=x: section_coefficients(sec, a, re, 0.0, x)[0], re_range=(3e4, 1e7))
-                    for x in xi]
+            # stations whose section blend is the same (a radial distribution placed at its stations:
+            # mostly one section each) share one fit
+            blend = (lambda x: tuple(np.round(sec.station_weights(x).ravel(), 12))) \
+                if hasattr(sec, "station_weights") else (lambda x: x)
+            by_blend = {}
+            for x in xi:
+                if blend(x) not in by_blend:
+                    by_blend[blend(x)] = fit_clmax(lambda a, re, x=x: section_coefficients(sec, a, re, 0.0, x)[0],
+                                                   re_range=(3e4, 1e7))
+            fits = [by_blend[blend(x)] for x in xi]
         else:
             fits = [fit_clmax(lambda a, re: section_coefficients(sec, a, re, 0.0)[0], re_range=(3e4, 1e7))] * len(xi)
         _CACHE[key] = (fits, sec)
