@@ -114,9 +114,7 @@ class DesignBounds:
     0.2-1.0 keeps the planform a trapezoid with a tip chord the lattice and the section data
     can carry; a wing without an aileron span (the TTW's, as defined) can sit on it.
     Design speeds 0.05-2.0 x the baseline: the Adkins-Liebeck design is valid down to
-    V = 0 (a hover design), so the box only keeps the variable's scale (a rotor that hovers
-    and cruises may be designed for any speed it flies: ``problems/ttw.py`` widens the box
-    to its cruise speed); the design cl of
+    V = 0 (hover), so the box only keeps its scale (``problems/ttw.py``: to the cruise speed); the design cl of
     the blade sections by the design point's stall limit at each station's Reynolds
     number (``design_cl_stall_rows``, the vehicle's stall margin) - the box 0.2-1.5
     is the range of the Adkins-Liebeck design.
