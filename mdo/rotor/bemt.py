@@ -90,7 +90,7 @@ import casadi as ca
 import numpy as np
 
 from ..core.smooth import softplus
-from .geometry import station_layout, station_r_over_R
+from .geometry import placed_stations, station_layout
 from .sections import section_coefficients
 
 __all__ = [
@@ -333,10 +333,8 @@ def bemt_function(sec, n_stations: int = 20, n_azimuth: int = 1, *, outputs: str
     x = _symbols(n, m)
     r, dr, e = _elements(x, n, m)
     R = x["radius_m"]
-    x_sec = None
-    if hub_fraction is not None and getattr(sec, "spanwise", False):
-        h = float(hub_fraction)
-        x_sec = np.tile(station_r_over_R(n, h), m)
+    x_sec = placed_stations(sec, n, hub_fraction)
+    x_sec = None if x_sec is None else np.tile(x_sec, m)
     ph = station_physics(x["phi_rad"], e["r"], e["chord"], e["theta"], x["v_axial_mps"], e["vy"],
                          x["rho_kgpm3"], x["mu_Pas"], x["a_mps"], x["blades"], R,
                          R * x["hub_fraction"], sec, tip_loss=tip_loss, hub_loss=hub_loss, x_sections=x_sec)

@@ -54,7 +54,7 @@ import numpy as np
 from ..core.atmosphere import check_altitude, density, dynamic_viscosity, speed_of_sound
 from ..core.errors import InputError
 from ..airfoil.clmax import fit_clmax
-from .geometry import RotorGeometry, station_layout, station_r_over_R
+from .geometry import RotorGeometry, placed_stations, station_layout, station_r_over_R
 from .sections import section as make_section, section_coefficients
 
 __all__ = ["adkins_liebeck_function", "adkins_liebeck", "adkins_liebeck_unrolled",
@@ -67,9 +67,9 @@ _CACHE: dict = {}
 
 
 def _section_hub(sec, hub_fraction):
-    """The hub fraction at which a radial distribution of sections is placed when a graph
-    is built (``bemt_function``'s ``hub_fraction``); None for a section that does not vary."""
-    return float(hub_fraction) if hub_fraction is not None and getattr(sec, "spanwise", False) else None
+    """The hub at which a radial distribution is placed (``geometry.placed_stations``), for the
+    cache keys; None for a section that does not vary along the blade."""
+    return None if placed_stations(sec, 2, hub_fraction) is None else float(hub_fraction)
 
 
 def _design_state(sec, n, w, alpha, p, tip_loss=True, hub_loss=True, x_sections=None):
@@ -142,7 +142,7 @@ def adkins_liebeck_function(sec, n_stations: int = 20, *, target: str = "thrust"
     p = _params_sym()
     w = ca.SX.sym("w_mps")
     alpha = ca.SX.sym("alpha_rad", n_stations)
-    x_sec = None if hub_fraction is None else station_r_over_R(n_stations, hub_fraction)
+    x_sec = placed_stations(sec, n_stations, hub_fraction)
     st = _design_state(sec, n_stations, w, alpha, p, tip_loss, hub_loss, x_sec)
     achieved = st["thrust"] if target == "thrust" else st["power"]
     res = ca.vertcat(achieved / p["target"] - 1.0, st["cl"] - p["cl_design"])

@@ -37,6 +37,7 @@ __all__ = [
     "RotorGeometry",
     "station_layout",
     "station_r_over_R",
+    "placed_stations",
     "read_geometry_csv",
     "write_geometry_csv",
     "DATA_DIR",
@@ -61,6 +62,15 @@ def station_r_over_R(n: int, hub_fraction: float) -> np.ndarray:
     """r/R of the ``n`` BEMT stations of a blade whose hub is at ``hub_fraction`` R:
     ``h + (1 - h) s_i``."""
     return hub_fraction + (1.0 - hub_fraction) * station_layout(n)[0]
+
+
+def placed_stations(sec, n: int, hub_fraction) -> np.ndarray | None:
+    """r/R of the ``n`` stations at which a radial distribution of sections (``sec.spanwise``)
+    is placed when a BEMT or Adkins-Liebeck graph is built for a rotor with this hub; None
+    when no hub is given or the section does not vary along the blade."""
+    if hub_fraction is None or not getattr(sec, "spanwise", False):
+        return None
+    return station_r_over_R(n, float(hub_fraction))
 
 
 def _as_float_array(field_name: str, values) -> np.ndarray:
