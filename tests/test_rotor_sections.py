@@ -69,6 +69,28 @@ def test_distribution_placed_at_the_stations_is_the_blend_at_a_fraction_of_the_c
     assert placed.n_instructions() < 2.0 * single.n_instructions() < full.n_instructions()
 
 
+def test_analysis_places_the_sections_as_the_nlp_does():
+    """The numeric analysis (the mission's initial guess) given the hub fraction solves with
+    one kernel per group of stations sharing a blend: the same loads as the blend everywhere
+    (to the dropped weights), and in the elements' kernels a fraction of the operations."""
+    from mdo.rotor.analysis import _station_groups, analyze_inputs, solve_kernel
+    sec = section("naca4412:0.35:clark_y:0.6:naca4412@xtr=0.1:0.85:e63;width=0.005")
+    n, K, hub = 20, 4, 0.12
+    inputs = dict(radius_m=1.0, hub_fraction=hub, blades=3, chord_m=np.full(n, 0.1),
+                  twist_rad=np.linspace(0.8, 0.3, n), pitch_rad=np.array([0.0, 0.1, -0.9, 0.2]),
+                  omega_radps=150.0, v_axial_mps=np.array([0.0, 30.0, 50.0, 60.0]), v_inplane_mps=0.0,
+                  rho_kgpm3=1.1, mu_Pas=1.8e-5, a_mps=340.0, spin=1.0)
+    a = analyze_inputs(sec, inputs, n, 1)
+    b = analyze_inputs(sec, inputs, n, 1, hub_fraction=hub)
+    assert a.converged.all() and b.converged.all()    # the -0.9 rad pitch exercises the fallback
+    for k in ("thrust_N", "torque_Nm", "power_W"):
+        assert np.allclose(a.values[k], b.values[k], rtol=1e-6), k
+    groups = _station_groups(sec, n, 1, hub)
+    assert 1 < len(groups) < n and sorted(i for _, idx in groups for i in idx) == list(range(n))
+    ops = sum(len(idx) * solve_kernel(sec, x_station=x).n_instructions() for x, idx in groups)
+    assert ops < 0.6 * n * solve_kernel(sec).n_instructions()
+
+
 @pytest.mark.parametrize("model", ["snel", "du_selig"])
 def test_stall_delay_only_past_the_linear_range(model):
     base = section("clark_y")

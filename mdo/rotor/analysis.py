@@ -23,6 +23,11 @@ analysis never raises for a hard operating point, it reports.
 
 The converged ``phi`` then goes through the same ``bemt_function`` the NLP
 uses ("full" outputs), so analysis and optimization share one definition.
+
+Given the rotor's ``hub_fraction`` (a number), a radial distribution of sections is
+placed at the stations when the kernels are built, as in ``bemt_function``: the
+stations that share one blend share one kernel, which evaluates only the sections
+carrying weight there (``geometry.placed_stations``).
 """
 from __future__ import annotations
 
@@ -35,7 +40,7 @@ import numpy as np
 from ..core.atmosphere import check_altitude, density, dynamic_viscosity, speed_of_sound
 from ..core.errors import InputError
 from .bemt import FULL_OUTPUTS, INPUT_NAMES, PHI_MAX_RAD, _elements, _symbols, bemt_function, station_physics
-from .geometry import RotorGeometry
+from .geometry import RotorGeometry, placed_stations
 from .sections import section as make_section
 
 __all__ = ["solve_kernel", "point_solver", "solve_phi", "analyze", "analyze_inputs", "RotorResult", "sweep_J",
@@ -52,31 +57,48 @@ def _cache_key(sec, *args):
 _ELEMENT_PARAMS = ("r", "chord", "theta", "vx", "vy", "rho", "mu", "a", "blades", "r_tip", "r_hub")
 
 
-def _element_residual(sec, tip_loss, hub_loss):
-    key = _cache_key(sec, "eres", tip_loss, hub_loss)
+def _element_residual(sec, tip_loss, hub_loss, x_station=None):
+    """One element's residual and its phi-derivative; ``x_station``: the numeric r/R at
+    which a radial distribution of sections is placed (None: at ``r / r_tip``)."""
+    key = _cache_key(sec, "eres", tip_loss, hub_loss, x_station)
     if key not in _CACHE:
         phi = ca.SX.sym("phi")
         p = [ca.SX.sym(k) for k in _ELEMENT_PARAMS]
-        res = station_physics(phi, *p, sec, tip_loss=tip_loss, hub_loss=hub_loss)["residual"]
+        res = station_physics(phi, *p, sec, tip_loss=tip_loss, hub_loss=hub_loss,
+                              x_sections=x_station)["residual"]
         f = ca.Function("bemt_element_residual", [phi] + p, [res, ca.jacobian(res, phi)],
                         ["phi"] + list(_ELEMENT_PARAMS), ["residual", "dres_dphi"])
         _CACHE[key] = (f, sec)  # keep sec alive so id() stays unique
     return _CACHE[key][0]
 
 
+def _station_groups(sec, n: int, m: int, hub_fraction) -> list:
+    """``[(x_station, element indices)]``: the elements (station fastest, n*m) grouped by
+    the blend placed at their station (one group with ``x_station = None`` when nothing is
+    placed).  Stations with equal section weights share one kernel."""
+    x = placed_stations(sec, n, hub_fraction)
+    if x is None:
+        return [(None, list(range(n * m)))]
+    w = sec.station_weights(x)
+    groups: dict = {}
+    for i in range(n):
+        groups.setdefault(tuple(np.round(w[:, i], 14)), []).append(i)
+    return [(float(x[st[0]]), [j * n + i for j in range(m) for i in st]) for st in groups.values()]
+
+
 def solve_kernel(sec, *, n_grid: int = 24, n_bisect: int = 10, n_newton: int = 5,
-                 tip_loss: bool = True, hub_loss: bool = True) -> ca.Function:
+                 tip_loss: bool = True, hub_loss: bool = True, x_station=None) -> ca.Function:
     """SX Function solving one element's residual on the interval (phi_a -> phi_b).
 
     Inputs: the element parameters (``r, chord, theta, vx, vy, rho, mu, a, blades,
     r_tip, r_hub``) and the search interval ``phi_a``, ``phi_b`` (grid order: the
     sign change nearest ``phi_a`` is taken).  Outputs ``phi``, ``residual``,
-    ``found`` (1 if a bracket was found).
+    ``found`` (1 if a bracket was found).  ``x_station``: as ``_element_residual``.
     """
-    key = _cache_key(sec, "kernel", n_grid, n_bisect, n_newton, tip_loss, hub_loss)
+    key = _cache_key(sec, "kernel", n_grid, n_bisect, n_newton, tip_loss, hub_loss, x_station)
     if key in _CACHE:
         return _CACHE[key][0]
-    fres = _element_residual(sec, tip_loss, hub_loss)
+    fres = _element_residual(sec, tip_loss, hub_loss, x_station)
     p = [ca.SX.sym(k) for k in _ELEMENT_PARAMS]
     phi_a, phi_b = ca.SX.sym("phi_a"), ca.SX.sym("phi_b")
 
@@ -119,27 +141,33 @@ def solve_kernel(sec, *, n_grid: int = 24, n_bisect: int = 10, n_newton: int = 5
 
 
 def point_solver(sec, n_stations: int = 20, n_azimuth: int = 1, *, tip_loss=True, hub_loss=True,
-                 **kernel_opts) -> ca.Function:
+                 hub_fraction=None, **kernel_opts) -> ca.Function:
     """Function: one operating point's inputs (``INPUT_NAMES`` without phi) ->
     ``phi_rad`` [n*m], ``residual`` [n*m], ``found`` [n*m], searching (0, PHI_MAX_RAD].
-    An MX wrapper around the SX element kernel mapped over the n*m elements."""
-    key = _cache_key(sec, "point", n_stations, n_azimuth, tip_loss, hub_loss,
+    An MX wrapper around the SX element kernels, each mapped over its elements;
+    ``hub_fraction``: as ``bemt_function`` (the input must then be that number)."""
+    key = _cache_key(sec, "point", n_stations, n_azimuth, tip_loss, hub_loss, hub_fraction,
                      tuple(sorted(kernel_opts.items())))
     if key in _CACHE:
         return _CACHE[key][0]
     n, m = n_stations, n_azimuth
-    x = _symbols(n, m, ca.MX)   # MX: the element kernel stays one mapped call node (fast build)
+    x = _symbols(n, m, ca.MX)   # MX: each element kernel stays one mapped call node (fast build)
     r, dr, e = _elements(x, n, m)
-    kern = solve_kernel(sec, tip_loss=tip_loss, hub_loss=hub_loss, **kernel_opts)
     N = n * m
     ones = ca.DM.ones(N, 1)
     args = [e["r"], e["chord"], e["theta"], x["v_axial_mps"] * ones, e["vy"], x["rho_kgpm3"] * ones,
             x["mu_Pas"] * ones, x["a_mps"] * ones, x["blades"] * ones, x["radius_m"] * ones,
             x["radius_m"] * x["hub_fraction"] * ones, _EPS_PHI * ones, PHI_MAX_RAD * ones]
-    out = kern.map(N)(*[ca.transpose(a) for a in args])
+    parts, order = [], []
+    for x_st, idx in _station_groups(sec, n, m, hub_fraction):
+        kern = solve_kernel(sec, tip_loss=tip_loss, hub_loss=hub_loss, x_station=x_st, **kernel_opts)
+        parts.append(kern.map(len(idx))(*[ca.transpose(a[idx]) for a in args]))
+        order += idx
+    back = [int(k) for k in np.argsort(order)]          # group order -> element order
+    out = [ca.transpose(ca.horzcat(*[pt[j] for pt in parts]))[back] for j in range(3)]
     names_in = [k for k in INPUT_NAMES if k != "phi_rad"]
-    f = ca.Function("bemt_point_solver", [x[k] for k in names_in],
-                    [ca.transpose(o) for o in out], names_in, ["phi_rad", "residual", "found"])
+    f = ca.Function("bemt_point_solver", [x[k] for k in names_in], out, names_in,
+                    ["phi_rad", "residual", "found"])
     _CACHE[key] = (f, sec)
     return f
 
@@ -188,17 +216,17 @@ def _broadcast_inputs(inputs: dict, n: int) -> tuple[dict, int]:
 
 
 def solve_phi(sec, inputs: dict, n_stations: int = 20, n_azimuth: int = 1, *, tip_loss=True,
-              hub_loss=True) -> dict:
+              hub_loss=True, hub_fraction=None) -> dict:
     """Solve the BEMT residual for K operating points at once.
 
     ``inputs``: ``INPUT_NAMES`` without ``phi_rad``; scalars or arrays with K
     entries (chord/twist: n or (n, K)).  Returns ``phi_rad``, ``residual``
     (n*m, K), ``found`` (bool), ``quadrant`` (1: (0, 3 pi/4], the NLP's domain; 2: (-pi/2, 0);
-    3: (3 pi/4, pi); 4: (-pi, -pi/2); 0 if none).
+    3: (3 pi/4, pi); 4: (-pi, -pi/2); 0 if none).  ``hub_fraction``: as ``point_solver``.
     """
     n, m = n_stations, n_azimuth
     arr, K = _broadcast_inputs(inputs, n)
-    f = point_solver(sec, n, m, tip_loss=tip_loss, hub_loss=hub_loss)
+    f = point_solver(sec, n, m, tip_loss=tip_loss, hub_loss=hub_loss, hub_fraction=hub_fraction)
     out = f(**{k: arr[k] for k in f.name_in()})
     phi = np.array(out["phi_rad"]).reshape(n * m, K)
     res = np.array(out["residual"]).reshape(n * m, K)
@@ -206,33 +234,43 @@ def solve_phi(sec, inputs: dict, n_stations: int = 20, n_azimuth: int = 1, *, ti
     quadrant = np.where(found, 1, 0)
     if not found.all():
         el = _element_arrays(arr, n, m)
-        kern = solve_kernel(sec, tip_loss=tip_loss, hub_loss=hub_loss)
-        half = 0.5 * math.pi
-        for q, (a, b) in ((2, (-_EPS_PHI, -half)), (3, (PHI_MAX_RAD, math.pi - _EPS_PHI)),
-                          (4, (-half, -math.pi + _EPS_PHI))):
-            idx = np.nonzero(~found)
-            if idx[0].size == 0:
-                break
-            p = [el[k][idx][None, :] for k in _ELEMENT_PARAMS]
-            o = kern(*p, a, b)
-            ok = np.array(o[2]).ravel() > 0.5
-            sel = tuple(ix[ok] for ix in idx)
-            phi[sel] = np.array(o[0]).ravel()[ok]
-            res[sel] = np.array(o[1]).ravel()[ok]
-            found[sel] = True
-            quadrant[sel] = q
-        idx = np.nonzero(~found)
-        if idx[0].size:
-            fres = _element_residual(sec, tip_loss, hub_loss)
-            grid = np.linspace(-math.pi + 1e-3, math.pi - 1e-3, 721)
-            for i, j in zip(*idx):
-                p = [el[k][i, j] for k in _ELEMENT_PARAMS]
-                vals = np.abs(np.array(fres(grid[None, :], *p)[0]).ravel())
-                vals[~np.isfinite(vals)] = np.inf
-                g = int(np.argmin(vals))
-                phi[i, j] = grid[g]
-                res[i, j] = float(fres(grid[g], *p)[0])
+        for x_st, rows in _station_groups(sec, n, m, hub_fraction):
+            in_group = np.zeros(n * m, bool)
+            in_group[rows] = True
+            _fallback_quadrants(sec, el, in_group[:, None], phi, res, found, quadrant,
+                                tip_loss, hub_loss, x_st)
     return {"phi_rad": phi, "residual": res, "found": found, "quadrant": quadrant}
+
+
+def _fallback_quadrants(sec, el, in_group, phi, res, found, quadrant, tip_loss, hub_loss, x_st):
+    """The elements of one station group without a root in (0, 3 pi/4]: Ning's other
+    quadrants, then the smallest |residual| on a fine grid (updates the arrays in place)."""
+    kern = solve_kernel(sec, tip_loss=tip_loss, hub_loss=hub_loss, x_station=x_st)
+    half = 0.5 * math.pi
+    for q, (a, b) in ((2, (-_EPS_PHI, -half)), (3, (PHI_MAX_RAD, math.pi - _EPS_PHI)),
+                      (4, (-half, -math.pi + _EPS_PHI))):
+        idx = np.nonzero(~found & in_group)
+        if idx[0].size == 0:
+            return
+        p = [el[k][idx][None, :] for k in _ELEMENT_PARAMS]
+        o = kern(*p, a, b)
+        ok = np.array(o[2]).ravel() > 0.5
+        sel = tuple(ix[ok] for ix in idx)
+        phi[sel] = np.array(o[0]).ravel()[ok]
+        res[sel] = np.array(o[1]).ravel()[ok]
+        found[sel] = True
+        quadrant[sel] = q
+    idx = np.nonzero(~found & in_group)
+    if idx[0].size:
+        fres = _element_residual(sec, tip_loss, hub_loss, x_st)
+        grid = np.linspace(-math.pi + 1e-3, math.pi - 1e-3, 721)
+        for i, j in zip(*idx):
+            p = [el[k][i, j] for k in _ELEMENT_PARAMS]
+            vals = np.abs(np.array(fres(grid[None, :], *p)[0]).ravel())
+            vals[~np.isfinite(vals)] = np.inf
+            g = int(np.argmin(vals))
+            phi[i, j] = grid[g]
+            res[i, j] = float(fres(grid[g], *p)[0])
 
 
 @dataclass
@@ -304,12 +342,12 @@ def operating_inputs(rotor: RotorGeometry, *, omega_radps, v_axial_mps=0.0, v_in
 
 
 def evaluate(sec, inputs: dict, phi: np.ndarray, n_stations: int, n_azimuth: int, *,
-             tip_loss=True, hub_loss=True) -> dict:
+             tip_loss=True, hub_loss=True, hub_fraction=None) -> dict:
     """All ``FULL_OUTPUTS`` of ``bemt_function`` at given ``phi`` (n*m, K)."""
-    key = _cache_key(sec, "full", n_stations, n_azimuth, tip_loss, hub_loss)
+    key = _cache_key(sec, "full", n_stations, n_azimuth, tip_loss, hub_loss, hub_fraction)
     if key not in _CACHE:
         _CACHE[key] = (bemt_function(sec, n_stations, n_azimuth, outputs="full", tip_loss=tip_loss,
-                                     hub_loss=hub_loss, name="bemt_full"), sec)
+                                     hub_loss=hub_loss, name="bemt_full", hub_fraction=hub_fraction), sec)
     f = _CACHE[key][0]
     arr, K = _broadcast_inputs(inputs, n_stations)
     out = f(**{k: arr[k] for k in INPUT_NAMES if k != "phi_rad"}, phi_rad=phi)
@@ -351,12 +389,14 @@ def analyze(rotor: RotorGeometry, *, omega_radps, v_axial_mps=0.0, v_inplane_mps
 
 
 def analyze_inputs(sec, inputs: dict, n_stations: int = 20, n_azimuth: int = 1, *, tip_loss=True,
-                   hub_loss=True) -> RotorResult:
+                   hub_loss=True, hub_fraction=None) -> RotorResult:
     """Low-level analysis on raw ``bemt_function`` inputs (no checks): chord and twist
-    given at the BEMT stations; scalars or K-vectors for the operating inputs."""
-    sol = solve_phi(sec, inputs, n_stations, n_azimuth, tip_loss=tip_loss, hub_loss=hub_loss)
-    vals = evaluate(sec, inputs, sol["phi_rad"], n_stations, n_azimuth, tip_loss=tip_loss,
-                    hub_loss=hub_loss)
+    given at the BEMT stations; scalars or K-vectors for the operating inputs.
+    ``hub_fraction`` (a number, equal to the input's): sections placed at the stations, as
+    the NLP's rotor Functions built with it (``bemt_function``)."""
+    kw = {"tip_loss": tip_loss, "hub_loss": hub_loss, "hub_fraction": hub_fraction}
+    sol = solve_phi(sec, inputs, n_stations, n_azimuth, **kw)
+    vals = evaluate(sec, inputs, sol["phi_rad"], n_stations, n_azimuth, **kw)
     vals["phi_rad"] = sol["phi_rad"]
     vals["quadrant"] = sol["quadrant"]
     resid = np.abs(np.asarray(vals["residual"]))

@@ -181,12 +181,11 @@ class SpanwiseSections:
         w = self.station_weights(x)
         symbolic = any(isinstance(v, (ca.SX, ca.MX)) for v in (alpha, reynolds, mach))
         if w.shape[1] == 1 or not symbolic:
-            shape = (-1,) + (1,) * max(np.ndim(alpha) - 1, 0)
             out = None
             for wk, sec in zip(w, self.sections):
                 if not wk.any():
-                    continue
-                wk = wk[0] if wk.size == 1 else wk.reshape(shape)
+                    continue   # (numeric alpha when w has several stations: np.ndim is safe)
+                wk = wk[0] if wk.size == 1 else wk.reshape((-1,) + (1,) * max(np.ndim(alpha) - 1, 0))
                 c = _coefficients(sec, alpha, reynolds, mach)
                 out = [wk * ci for ci in c] if out is None else [o + wk * ci for o, ci in zip(out, c)]
             return tuple(out)

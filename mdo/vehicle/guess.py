@@ -168,7 +168,8 @@ def _size_motor_guess(ac, gm, nodes, Q1, omega, active):
 
 
 def bemt_numeric(gm, omega, v_ax, v_ip, h, pitch, n_azimuth=1):
-    """Numeric BEMT of rotor group ``gm`` (a RotorGroupModel) at its baseline blade."""
+    """Numeric BEMT of rotor group ``gm`` (a RotorGroupModel) at its baseline blade, with the
+    sections placed at the stations as in the group's NLP Functions (``rotor_group.py``)."""
     g = gm.config
     blade = gm.baseline_blade()
     atm = atmosphere(h)
@@ -180,7 +181,7 @@ def bemt_numeric(gm, omega, v_ax, v_ip, h, pitch, n_azimuth=1):
               "v_inplane_mps": v_ip if n_azimuth > 1 else np.zeros(K),
               "rho_kgpm3": atm["density_kgpm3"], "mu_Pas": atm["dynamic_viscosity_Pas"],
               "a_mps": atm["speed_of_sound_mps"], "spin": np.ones(K)}
-    return analyze_inputs(gm.section, inputs, gm.n_stations, n_azimuth)
+    return analyze_inputs(gm.section, inputs, gm.n_stations, n_azimuth, hub_fraction=g.hub_fraction)
 
 # ``mdo run`` builds a problem twice (the baseline with its design frozen, then the
 # optimization): the same rotor-speed guesses, 2-3 s of numeric BEMT per build, are kept
