@@ -8,6 +8,8 @@ and the objective at 161 points on the line through them (t from -0.5 to 1.5; 0 
 TO).  It prints the rows whose largest second difference along the line stands out from their
 median (a jump or a kink: a model that is not smooth where the iterates go), with the place on
 the line.  Two iterates an IPOPT run steps back and forth between are the natural pair.
+``--iterates FILE.npz``: the two iterates are saved there after the solve, and read from there
+(no solve) when it exists - so a model change can be traced along the same line.
 Not collected by pytest.
 """
 from __future__ import annotations
@@ -52,17 +54,30 @@ def row_labels(p) -> list:
 
 
 def main():
-    problem, baseline, first, last = sys.argv[1], sys.argv[2], int(sys.argv[3]), int(sys.argv[4])
+    args = sys.argv[1:]
+    saved = None
+    if "--iterates" in args:
+        i = args.index("--iterates")
+        saved = Path(args[i + 1])
+        del args[i:i + 2]
+    problem, baseline, first, last = args[0], args[1], int(args[2]), int(args[3])
     p = _import_file(ROOT / "problems" / f"{problem}.py").build(analysis=False)
     p.warm_start(baseline)
     p.start_from_baseline()
-    keep = _Keep(p, first)
-    p.divergence_watch = keep
-    log = Path(f"/tmp/row_kinks_{problem}_ipopt.log")
-    sol = p.solve(verbose=False, max_iter=last, threads=2, log_path=log)
-    print(f"{problem}: {sol.status} after {sol.iterations} iterations (IPOPT log {log})")
     opti = p.opti
-    xa, xb = keep.kept[first], keep.kept[last]
+    if saved is not None and saved.exists():
+        z = np.load(saved)
+        xa, xb = z["xa"], z["xb"]
+        print(f"{problem}: iterates {first} and {last} read from {saved}")
+    else:
+        keep = _Keep(p, first)
+        p.divergence_watch = keep
+        log = Path(f"/tmp/row_kinks_{problem}_ipopt.log")
+        sol = p.solve(verbose=False, max_iter=last, threads=2, log_path=log)
+        print(f"{problem}: {sol.status} after {sol.iterations} iterations (IPOPT log {log})")
+        xa, xb = keep.kept[first], keep.kept[last]
+        if saved is not None:
+            np.savez(saved, xa=xa, xb=xb)
     par = np.asarray(opti.value(opti.p, opti.value_parameters()), float).ravel() if opti.np else np.zeros(0)
     labels = row_labels(p)
     G = ca.Function("g", [opti.x, opti.p], [opti.g, opti.f])
