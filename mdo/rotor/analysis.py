@@ -75,9 +75,12 @@ def _element_residual(sec, tip_loss, hub_loss, x_station=None):
 def _station_groups(sec, n: int, m: int, hub_fraction) -> list:
     """``[(x_station, element indices)]``: the elements (station fastest, n*m) grouped by
     the blend placed at their station (one group with ``x_station = None`` when nothing is
-    placed).  Stations with equal section weights share one kernel."""
+    placed).  Stations with equal section weights share one kernel.  A section with stall
+    delay reads r/R itself (its augmentation factor), so it is not grouped: it reads r/R from
+    each element, as without a hub; so does a distribution without per-station weights
+    (``SpanwiseBlend``)."""
     x = placed_stations(sec, n, hub_fraction)
-    if x is None:
+    if x is None or getattr(sec, "rotational", False) or not hasattr(sec, "station_weights"):
         return [(None, list(range(n * m)))]
     w = sec.station_weights(x)
     groups: dict = {}
@@ -371,7 +374,8 @@ def analyze(rotor: RotorGeometry, *, omega_radps, v_axial_mps=0.0, v_inplane_mps
     (>= 0), ``altitude_m`` (USSA76; or give rho/mu/a directly), ``pitch_rad``
     (collective; default the geometry's pitch offset).  ``n_azimuth`` defaults to
     1 in axial flow and 12 when any in-plane velocity is given.  Returns a
-    ``RotorResult`` with every ``FULL_OUTPUTS`` entry, ``phi_rad`` and the residual.
+    ``RotorResult`` with every ``FULL_OUTPUTS`` entry, ``phi_rad`` and the residual.  A radial
+    distribution of sections is placed at the stations of this rotor's hub (``analyze_inputs``).
     """
     sec = make_section(rotor.airfoil if section is None else section)
     vin = np.asarray(v_inplane_mps, dtype=float)
@@ -383,7 +387,8 @@ def analyze(rotor: RotorGeometry, *, omega_radps, v_axial_mps=0.0, v_inplane_mps
                                   v_inplane_mps=v_inplane_mps, altitude_m=altitude_m,
                                   pitch_rad=pitch_rad, rho_kgpm3=rho_kgpm3, mu_Pas=mu_Pas,
                                   a_mps=a_mps, n_stations=n_stations)
-    out = analyze_inputs(sec, inputs, n_stations, n_azimuth, tip_loss=tip_loss, hub_loss=hub_loss)
+    out = analyze_inputs(sec, inputs, n_stations, n_azimuth, tip_loss=tip_loss, hub_loss=hub_loss,
+                         hub_fraction=rotor.hub_fraction)
     out.stations = st
     return out
 
