@@ -251,3 +251,30 @@ def test_solve_into_names_a_wrong_figures_value(tmp_path):
     with pytest.raises(InputError, match="figures"):
         solve_into(p, tmp_path / "x", figures="later")
     assert not (tmp_path / "x").exists()          # refused before anything is written
+
+
+def test_divergence_watch_gives_up_a_hessian_held_far_from_convex(tmp_path):
+    """Seven iterations in a row with an inertia correction of 1e7 or more are given up (TTW
+    attempts that reached their timeouts held it for 8-9, at a minute per iteration); the
+    committed converged runs hold it at most 5, and iterations without a correction ("-") or
+    with a small one break the run."""
+    from mdo.nlp.ipopt import Diverging, DivergenceWatch
+
+    log = tmp_path / "ipopt.log"
+    head = "iter    objective    inf_pr   inf_du lg(mu)  ||d||  lg(rg) alpha_du alpha_pr  ls\n"
+
+    def write(lg_rg):
+        log.write_text(head + "".join(f"{i:4d}  1.0e+00 1.0e-01 1.00e+02  -4.0 1.0e+00 {rg:>6} 1.0e+00 1.0e-02h  1\n"
+                                      for i, rg in enumerate(lg_rg)))
+
+    write(["-"] * 10 + ["8.5"] * 6)
+    DivergenceWatch().check(log, 15)                      # six in a row: not yet
+    write(["-"] * 10 + ["8.5"] * 3 + ["6.9"] + ["9.7"] * 6)
+    DivergenceWatch().check(log, 19)                      # broken by one below 1e7
+    write(["-"] * 10 + ["8.5"] * 3 + ["-"] + ["9.7"] * 6)
+    DivergenceWatch().check(log, 19)                      # broken by one without a correction
+    w = DivergenceWatch()
+    write(["-"] * 10 + ["7.0"] * 7)
+    with pytest.raises(Diverging):
+        w.check(log, 16)
+    assert "lg(rg) >= 7" in w.reason and "iteration 16" in w.reason

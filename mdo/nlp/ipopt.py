@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import contextlib
+import math
 import os
 import signal
 from dataclasses import dataclass
@@ -89,10 +90,19 @@ class DivergenceWatch:
       with inf_du growing from 1e2 to 1e6; the committed adaptive runs leave it within a few
       iterations (largest lg(mu) after iteration 30: -3.3, and -1.6 to 1.1 for at most 10
       iterations in a row in the untrimmed TTW's 260-iteration fallback).  A monotone attempt
-      (mu 1e-4) never meets it.
+      (mu 1e-4) never meets it;
+    * **the Hessian stays far from convex**: ``rg_run`` consecutive iterations whose inertia
+      correction is at least ``10**lg_rg_stuck`` (IPOPT's lg(rg)): each step is then a tiny
+      gradient step, and each iteration costs several factorizations (a minute on the TTW).
+      Three TTW attempts that ended by a timeout or by hand held it at 1e7-1e10 for 8-9
+      iterations in a row (robustness start 1 on 2026-12-06, sixteenth session, from iteration 14
+      to its 1500 s timeout at 22; the same study's start 2 with a pole-free BEMT residual,
+      seventeenth; ``results/ttw/drag_pmsm_attempt``, stopped by hand at 69); the committed
+      converged runs hold it at most 5 iterations (the untrimmed TTW's analysis).
 
-    Replayed on the 40 converged run folders committed on 2026-12-06 (every ``ipopt.log`` under
-    ``results/``), neither sign would have stopped any of them."""
+    Replayed on every ``ipopt.log`` under ``results/`` on 2026-12-06 (49): none of the signs would
+    have stopped any of the 44 converged runs; each of the five attempts that did not converge
+    meets one of them (the new sign: ``drag_pmsm_attempt`` at iteration 67)."""
 
     after_iter: int = 100
     inf_du_max: float = 1e4
@@ -100,21 +110,28 @@ class DivergenceWatch:
     mu_after_iter: int = 20
     lg_mu_stall: float = -1.2
     mu_run: int = 20
+    lg_rg_stuck: float = 7.0
+    rg_run: int = 7
     reason: str | None = None
 
     def check(self, log_path, iteration: int) -> None:
-        if iteration < min(self.after_iter, self.mu_after_iter) + 1:
+        if iteration < min(self.after_iter, self.mu_after_iter, self.rg_run - 1):
             return
-        rows = _last_iterations(log_path, max(self.run, self.mu_run))
-        du_rows, mu_rows = rows[-self.run:], rows[-self.mu_run:]
+        rows = _last_iterations(log_path, max(self.run, self.mu_run, self.rg_run))
+        du_rows, mu_rows, rg_rows = rows[-self.run:], rows[-self.mu_run:], rows[-self.rg_run:]
+        if len(rg_rows) == self.rg_run and min(r[3] for r in rg_rows) >= self.lg_rg_stuck:
+            it, du, _, rg = rg_rows[-1]
+            self.reason = (f"inertia correction at lg(rg) >= {self.lg_rg_stuck:g} for {self.rg_run} iterations "
+                           f"(lg(rg) {rg:g}, dual infeasibility {du:.1e} at iteration {it})")
+            raise Diverging(self.reason)
         if iteration > self.after_iter and len(du_rows) == self.run and min(r[1] for r in du_rows) > self.inf_du_max:
-            it, du, _ = du_rows[-1]
+            it, du, _, _ = du_rows[-1]
             self.reason = (f"dual infeasibility above {self.inf_du_max:g} for {self.run} iterations "
                            f"after iteration {self.after_iter} (last {du:.1e} at iteration {it})")
             raise Diverging(self.reason)
         if (iteration > self.mu_after_iter and len(mu_rows) == self.mu_run
                 and min(r[2] for r in mu_rows) >= self.lg_mu_stall and mu_rows[0][0] > self.mu_after_iter):
-            it, du, mu = mu_rows[-1]
+            it, du, mu, _ = mu_rows[-1]
             self.reason = (f"barrier parameter at lg(mu) >= {self.lg_mu_stall:g} for {self.mu_run} iterations "
                            f"after iteration {self.mu_after_iter} (lg(mu) {mu:g}, dual infeasibility {du:.1e} "
                            f"at iteration {it})")
@@ -122,7 +139,8 @@ class DivergenceWatch:
 
 
 def _last_iterations(log_path, n: int) -> list:
-    """(iteration, inf_du, lg(mu)) of the last ``n`` iteration lines of an IPOPT log (fewer if not yet written)."""
+    """(iteration, inf_du, lg(mu), lg(rg)) of the last ``n`` iteration lines of an IPOPT log (fewer
+    if not yet written); lg(rg) is -inf where IPOPT made no inertia correction ("-")."""
     try:
         with open(log_path, "rb") as f:
             f.seek(0, os.SEEK_END)
@@ -133,9 +151,10 @@ def _last_iterations(log_path, n: int) -> list:
     out = []
     for line in lines:
         tok = line.split()
-        if len(tok) >= 5 and tok[0].rstrip("r").isdigit():
+        if len(tok) >= 7 and tok[0].rstrip("r").isdigit():
             with contextlib.suppress(ValueError):
-                out.append((int(tok[0].rstrip("r")), float(tok[3]), float(tok[4])))
+                rg = -math.inf if tok[6] == "-" else float(tok[6])
+                out.append((int(tok[0].rstrip("r")), float(tok[3]), float(tok[4]), rg))
     return out[-n:]
 
 
