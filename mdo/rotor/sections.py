@@ -184,7 +184,8 @@ class SpanwiseSections:
             out = None
             for wk, sec in zip(w, self.sections):
                 if not wk.any():
-                    continue   # (numeric alpha when w has several stations: np.ndim is safe)
+                    continue
+                # several stations only with numeric alpha (np.ndim on a CasADi value warns)
                 wk = wk[0] if wk.size == 1 else wk.reshape((-1,) + (1,) * max(np.ndim(alpha) - 1, 0))
                 c = _coefficients(sec, alpha, reynolds, mach)
                 out = [wk * ci for ci in c] if out is None else [o + wk * ci for o, ci in zip(out, c)]

@@ -169,14 +169,19 @@ def cruise_speed(bu, altitude_m, mass_kg, shaft_power_W):
     return operating_point(bu, V, altitude_m, mass_kg, shaft_power_W)
 
 
+def density_ratio(altitude_m):
+    """sigma = rho(h) / rho(0), ISA."""
+    return float(density(altitude_m) / density(0.0))
+
+
 def climb_rate_fpm(op, altitude_m, mass_kg):
     """Rate of climb at constant equivalent (indicated) airspeed, as flight manuals state it:
     the specific excess power d(h + V^2/2g)/dt = P_ex/W (the energy-height relation; Anderson,
     *Aircraft Performance and Design*, 1999, ch. 6) with V = V_e/sqrt(sigma) growing as the air
     thins, dV/dh = -(V/2sigma) dsigma/dh: dh/dt = (P_ex/W) / (1 + (V/g) dV/dh)."""
     V, dh = op["V"], 10.0
-    dsigma_dh = float(density(altitude_m + dh) - density(altitude_m - dh)) / (2 * dh) / float(density(0.0))
-    sigma = float(density(altitude_m) / density(0.0))
+    dsigma_dh = (density_ratio(altitude_m + dh) - density_ratio(altitude_m - dh)) / (2 * dh)
+    sigma = density_ratio(altitude_m)
     accel = 1.0 - V * V / (2 * G * sigma) * dsigma_dh
     return op["excess_power_W"] / (mass_kg * G) / accel / u.FT_PER_MIN
 
@@ -195,7 +200,7 @@ def climb_at(bu, V, altitude_m, mass_kg, shaft_power_W):
 
 
 def gagg_farrar(altitude_m):
-    sigma = float(density(altitude_m) / density(0.0))
+    sigma = density_ratio(altitude_m)
     return sigma - (1 - sigma) / 7.55
 
 
@@ -222,7 +227,7 @@ def afm_climb_checks(bu, power_W=P_MCP_W):
     for mass, table in AFM_CLIMB.items():
         for h_ft, vy, rates in table:
             h = h_ft * u.FT
-            sqrt_sigma = math.sqrt(float(density(h) / density(0.0)))
+            sqrt_sigma = math.sqrt(density_ratio(h))
             afm = float(np.interp(float(temperature(h)) - 273.15, AFM_CLIMB_TEMPS_C, rates))
             power = N_ENGINES * power_W * gagg_farrar(h)
             at_vy = climb_at(bu, vy * u.KNOT / sqrt_sigma, h, mass, power)
