@@ -1,6 +1,7 @@
 """Drag build-up (mdo.wing.buildup): flat-plate limits, transition modes, slipstream scrubbing,
 cooling and excrescence terms, CasADi, and the P2006T CD0 / cruise speed against its class."""
 import importlib.util
+import math
 import pathlib
 
 import casadi as ca
@@ -168,3 +169,23 @@ def test_p2006t_climb_table_within_10_percent_with_the_calibration():
     op = mod.operating_point(bu, 45.0, h, 1180.0, 2 * 69e3 * mod.gagg_farrar(h))
     steady = op["excess_power_W"] / (1180.0 * mod.G) / (0.3048 / 60)
     assert 0.005 < 1 - mod.climb_rate_fpm(op, h, 1180.0) / steady < 0.02
+
+
+def test_p2006t_ld_max_on_raymers_class_trend():
+    """Issue 17's L/D against its class: the P2006T build-up's (L/D)max, as stated and with the
+    catalog's calibration, within 10 % of Raymer's trend for retractable-gear propeller aircraft,
+    K_LD sqrt(b^2/S_wet) with K_LD = 11 (15.6 on this wetted area), and above the fixed-gear
+    trend's K_LD = 9; a wider wing of the same area raises the trend as sqrt(b^2/S_wet)."""
+    mod = _p2006t_module()
+    bu = mod.build_p2006t()
+    h = 7000 * 0.3048
+    power = 2 * 69.0e3 * mod.gagg_farrar(h)
+    trend = mod.raymer_ld_max(bu, 11.4)
+    assert trend == pytest.approx(15.6, abs=0.1)
+    for b in (bu, mod.calibrated_p2006t(bu)):
+        ld = mod.model_ld_max(mod.cruise_speed(b, h, 1180.0, power), 11.4, b.s_ref_m2)
+        assert ld == pytest.approx(trend, rel=0.10)
+        assert ld > mod.raymer_ld_max(b, 11.4, mod.RAYMER_K_LD_FIXED_GEAR_PROP)
+    wide = mod.build_p2006t(14.87, 0.66)
+    ratio = mod.raymer_ld_max(wide, 14.87) / trend
+    assert ratio == pytest.approx(14.87 / 11.4 * math.sqrt(mod.total_wetted_area(bu) / mod.total_wetted_area(wide)))

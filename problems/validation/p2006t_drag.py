@@ -51,6 +51,8 @@ Run: ``python problems/validation/p2006t_drag.py`` -> ``results/validation/p2006
 """
 from __future__ import annotations
 
+import dataclasses
+import json
 import math
 import pathlib
 import sys
@@ -77,6 +79,11 @@ K_PROFILE = 0.82
 SENS = {"k_profile": 0.0, "e_factor": 1.0, "cd0_factor": 1.0}
 HEAT_TO_AIR_PER_SHAFT_W = 1.0
 RAYMER_CFE_LIGHT_TWIN = 0.0045   # Raymer Table 12.3
+# Raymer's trend of the maximum lift-to-drag ratio with the wetted aspect ratio b^2/S_wet,
+# (L/D)max = K_LD sqrt(b^2/S_wet) (Raymer, *Aircraft Design: A Conceptual Approach*, sec. 3.4,
+# Fig. 3.6): K_LD = 11 for retractable-gear propeller aircraft (the P2006T), 9 for fixed gear
+RAYMER_K_LD_RETRACTABLE_PROP = 11.0
+RAYMER_K_LD_FIXED_GEAR_PROP = 9.0
 
 # P2006T AFM Section 5 (module docstring): cruise tables at 2250 propeller rpm, ISA column,
 # (altitude ft, power %, KTAS), one row per manifold pressure
@@ -99,8 +106,12 @@ AFM_CLIMB = {
 AFM_CLIMB_TEMPS_C = (-25.0, 0.0, 25.0)
 
 
-def build_p2006t() -> DragBuildup:
+def build_p2006t(span_m=None, taper=None) -> DragBuildup:
+    """The P2006T airframe's build-up; ``span_m`` / ``taper``: another main wing of the same
+    area (the GA-2P optimum's, for the L/D trend)."""
     main, htail, vtail, fus = _ga_airframe()
+    if span_m is not None or taper is not None:
+        main = dataclasses.replace(main, span_m=span_m or main.span_m, taper=taper or main.taper)
     comps = []
     for w in (main, htail, vtail):
         # exposed: the wing minus the fuselage-width strip of root chord; tails taken whole
@@ -244,6 +255,57 @@ def total_wetted_area(bu):
     return s
 
 
+def raymer_ld_max(bu, span_m, k_ld=RAYMER_K_LD_RETRACTABLE_PROP):
+    """Raymer's class trend (L/D)max = K_LD sqrt(b^2 / S_wet) for the build-up's wetted area."""
+    return k_ld * math.sqrt(span_m ** 2 / total_wetted_area(bu))
+
+
+def model_ld_max(op, span_m, s_ref_m2):
+    """(L/D)max = 0.5 sqrt(pi A e / CD0) of an operating point's polar (CD0 held at its value there)."""
+    return 0.5 * math.sqrt(math.pi * span_m ** 2 / s_ref_m2 * op["e"] / op["CD0"])
+
+
+def mission_cruise_polar(run_dir, s_ref_m2):
+    """The mean cruise (CR) node of a committed run folder: CL, CD, L/D and the parabolic polar
+    through it (CD0 = CD - CDi, e from the lattice's CDi and the wing's span), or None."""
+    path = pathlib.Path(run_dir)
+    if not (path / "mission.csv").exists():
+        return None
+    import csv
+    rows = [r for r in csv.DictReader((path / "mission.csv").open()) if r["segment"] == "CR"]
+    span = json.loads((path / "design.json").read_text())["wings"]["main_wing"]["span_m"]
+    mean = lambda k: sum(float(r[k]) for r in rows) / len(rows)
+    cl, cd, cdi = mean("CL"), mean("CD"), mean("CDi")
+    e = cl * cl / (math.pi * span ** 2 / s_ref_m2 * cdi)
+    return {"span_m": span, "CL": cl, "CD": cd, "L/D": cl / cd, "e": e, "CD0": cd - cdi,
+            "ld_max": model_ld_max({"e": e, "CD0": cd - cdi}, span, s_ref_m2)}
+
+
+def ld_against_class(bu, res):
+    """Rows (label, span m, S_wet/S_ref, Raymer (L/D)max at K_LD 11 and 9, the model's (L/D)max,
+    its Oswald e, the model's L/D at its cruise point): the P2006T build-up as stated and calibrated, and the
+    GA-2P baseline and optimum of the committed run folders (their wing on this airframe)."""
+    main = _ga_airframe()[0]
+    cal = calibrated_p2006t(bu)
+    c_cal = cruise_speed(cal, 7000 * u.FT, 1180.0, res["p_full_7000"])
+    rows = []
+    for label, op, b in (("P2006T build-up, 7000 ft full throttle (stated 10 % leakage)", res["cruise_pp"], bu),
+                         ("the same with the catalog's calibration", c_cal, cal)):
+        rows.append((label, main.span_m, total_wetted_area(b) / b.s_ref_m2, raymer_ld_max(b, main.span_m),
+                     raymer_ld_max(b, main.span_m, RAYMER_K_LD_FIXED_GEAR_PROP),
+                     model_ld_max(op, main.span_m, b.s_ref_m2), op["e"], op["CL"] / op["CD"]))
+    for label, run_dir in (("GA-2P baseline, cruise (mission nodes)", ROOT / "results/ga2p/analysis"),
+                           ("GA-2P optimum, cruise (mission nodes)", ROOT / "results/ga2p")):
+        m = mission_cruise_polar(run_dir, bu.s_ref_m2)
+        if m is None:
+            continue
+        taper = json.loads((run_dir / "design.json").read_text())["wings"]["main_wing"]["taper"]
+        b = build_p2006t(m["span_m"], taper)
+        rows.append((label, m["span_m"], total_wetted_area(b) / b.s_ref_m2, raymer_ld_max(b, m["span_m"]),
+                     raymer_ld_max(b, m["span_m"], RAYMER_K_LD_FIXED_GEAR_PROP), m["ld_max"], m["e"], m["L/D"]))
+    return rows
+
+
 def run():
     bu = build_p2006t()
     h7 = 7000 * u.FT
@@ -271,6 +333,7 @@ def run():
     res["afm_cruise_cal"] = afm_cruise_checks(cal, P_MCP_W)
     res["afm_climb_leak"] = afm_climb_checks(cal, P_MCP_W)
     res["climb_90kt_cal"] = {p: climb_at(cal, 90 * u.KNOT, 0.0, 1180.0, N_ENGINES * p) for p in (P_MAX_W, P_MCP_W)}
+    res["ld_class"] = ld_against_class(bu, res)
     return bu, res
 
 
@@ -402,6 +465,8 @@ Climb at 90 KIAS: η_p = {cl90['eta_p']:.3f}, slipstream r = {cl90['r_slip']:.3f
 | implied by the AFM cruise tables (18 points, mean; section above) | {sum(r[7] for r in res['afm_cruise']) / len(res['afm_cruise']):.4f} |
 | light piston twins, Roskam / Gudmundsson class range (as quoted in issue 17, not re-checked) | 0.020–0.035 |
 
+{_ld_section(res)}
+
 ## Reading
 
 The flight manual's tables are the reference now (section above): every cruise point passes at
@@ -484,6 +549,29 @@ at constant indicated speed, so part of the excess power accelerates it as the a
 | kg | ft | AFM Vy KIAS | AFM ft/min | model ft/min at AFM Vy | error | model best ft/min | model Vy KIAS |
 |---:|---:|---:|---:|---:|---:|---:|---:|
 {clb}"""
+
+
+def _ld_section(res):
+    rows = "\n".join(f"| {lab} | {b:.2f} | {sw:.2f} | {b * b / (sw * 14.76):.2f} | {r11:.1f} | {r9:.1f} | {m:.1f} "
+                     f"({m / r11 - 1:+.0%}) | {e:.3f} | {c:.1f} ({c / r11:.0%}) |"
+                     for lab, b, sw, r11, r9, m, e, c in res["ld_class"])
+    return f"""## L/D against the class
+
+Raymer's trend of (L/D)max with the wetted aspect ratio b²/S_wet (*Aircraft Design: A
+Conceptual Approach*, sec. 3.4, Fig. 3.6): (L/D)max = K_LD sqrt(b²/S_wet), K_LD = {RAYMER_K_LD_RETRACTABLE_PROP:g} for
+retractable-gear propeller aircraft like the P2006T ({RAYMER_K_LD_FIXED_GEAR_PROP:g} with fixed gear).  The wetted area is
+this build-up's, with the run's own wing (same area) for GA-2P.  The model's (L/D)max is the
+parabolic polar through its cruise point, 0.5 sqrt(pi A e / CD0): for the build-up with
+Raymer's Oswald factor (Eq. 12.48, which carries the lift-dependent profile drag); for GA-2P
+with CD0 = CD - CDi and e from the lattice's CDi at the mean cruise node (about 1: the
+lattice's induced drag, the slipstream's swirl included), which leaves the lift-dependent profile drag in CD0, so its (L/D)max is an upper bound.  A
+propeller aircraft's best range is flown at (L/D)max (Raymer sec. 3.4); the missions cruise
+faster than that (78 m/s), so their cruise L/D sits below it (in brackets: the fraction of
+the K_LD 11 trend).
+
+| case | span (m) | S_wet/S_ref | A_wet | Raymer (L/D)max, K_LD 11 | K_LD 9 | model (L/D)max (vs K_LD 11) | e | model cruise L/D |
+|---|---:|---:|---:|---:|---:|---:|---:|---:|
+{rows}"""
 
 
 def _implied_cd0(op):
