@@ -82,6 +82,10 @@ wing's bending and stiffness material, so that its mass responds to span, taper 
 lift share, ``mdo.vehicle.wing_structure``; "raymer": Eq. 15.46 alone), ``max_tip_deflection_pct`` (20: the
 wing's limit-load tip deflection, percent of the semispan, that its caps are sized to hold): what-ifs on the airframe and
 motor models (``mdo.studies.airframe_variant``; results/table3_reconciliation.md).
+``max_twist_deg`` (8): the wings' section-twist box, +-that many degrees (``DesignBounds.twist_deg``).  The
+front wing's twist sits on it at the optimum: in the trimmed wing-borne segments its trim incidence takes up
+any common twist, but the hover and transition segments are not trimmed and fly it at zero incidence, so
+there the twist is the front wing's only incidence (``results/ttw/twist_box_12deg/``: +-12 deg gains 0.15 %).
 """
 from dataclasses import replace
 
@@ -107,6 +111,7 @@ OPTIONS = {**AIRCRAFT_OPTIONS, **AIRFRAME_OPTIONS, **TRAJECTORY_OPTIONS,
     "max_span_m": (float, 5.0, 30.0),
     "ailerons_from_eta": (float, 0.0, 0.95),
     "ailerons": (bool,),
+    "max_twist_deg": (float, 2.0, 30.0),
 }
 
 
@@ -149,7 +154,7 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
           blown_profile_drag: bool = True, engine_out: str | None = None, fin_sizing: bool = False,
           trajectory: str = "prescribed", max_block_time_min: float | None = None,
           min_climb_gradient_pct: float | None = None, max_span_m: float | None = None,
-          ailerons_from_eta: float | None = None, ailerons: bool = True):
+          ailerons_from_eta: float | None = None, ailerons: bool = True, max_twist_deg: float = 8.0):
     p = Problem("ttw", "TTW tandem tilt-wing whole-mission optimization (Clarke et al. Eq. 7)")
     cfg = ttw(rotation)
     cfg = replace(cfg, battery=replace(cfg.battery, cells_series=cells_series, cells_parallel=cells_parallel,
@@ -169,7 +174,8 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
     # design-speed box reaches the cruise speed (the default 2 x the baseline's 10 m/s held the
     # optimum's design speed on 20 m/s at 0.14 kWh per m/s, 2026-12-06, sixteenth session).
     v_design = cfg.rotor_groups[0].design_speed_mps
-    bounds = DesignBounds(design_speed=(0.05, max(2.0, cruise_speed_mph * MPH / v_design)))
+    bounds = DesignBounds(design_speed=(0.05, max(2.0, cruise_speed_mph * MPH / v_design)),
+                          twist_deg=(-max_twist_deg, max_twist_deg))
     vehicle = Aircraft(cfg, bounds=bounds, trim=trim, wing_viscous=wing_viscous, blown_profile_drag=blown_profile_drag, n_stations=n_stations, n_azimuth=n_azimuth, wing_strips=wing_strips,
                        mass_model=mass_model, coupling=coupling, swirl_recovery=swirl_recovery, limits=limits,
                        tip_mach_limit=tip_mach_limit, allow_regeneration=allow_regeneration,
