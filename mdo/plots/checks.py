@@ -13,6 +13,14 @@ constraints).  Each range with its basis:
 * tip Mach number <= 0.70 over the mission (``mission.csv``): beyond it the tip sections
   of usual propeller airfoils approach their drag-divergence Mach number and the noise
   rises steeply; the paper's design point is bounded at 0.6 (the problems' ``tip_mach_max``).
+* the best net propulsive efficiency over the nodes that thrust with shaft power
+  (``mission.csv``: the rotors' force along the flight path times the speed over shaft
+  power) at most 0.92: the best measured full-scale propellers, two-blade 10-ft
+  NACA 16-series blades with Betz loading in the Langley 16-ft high-speed tunnel, reached
+  "of the order of 91.5 to 92 percent" (W. Solomon, NACA TN 2881, 1953); production
+  constant-speed GA propellers cruise at 0.80-0.85 (Gudmundsson, *General Aviation Aircraft
+  Design*, 2014, ch. 14).  Above it an isolated blade's figure is better than any measured
+  one: the design is worth a second look (nacelle and spinner blockage, shank losses).
 * wing loading ``W/S`` in [50, 2000] N/m^2 (``design.json`` TOGW, ``geometry.json``
   reference area): Raymer, *Aircraft Design: A Conceptual Approach*, Table 5.5 (typical
   take-off wing loadings) runs from 6 lb/ft^2 (290 N/m^2, sailplanes) to 40 lb/ft^2
@@ -36,6 +44,8 @@ CHECKS = {
     "solidity B c/(pi R) at 0.75 R": (0.03, 0.25, "-", "rotors 0.05-0.12 (Leishman 2006), turboprops to 0.25"),
     "maximum tip Mach number": (0.0, 0.70, "-", "drag divergence and noise of the tip sections"),
     "wing loading W/S": (50.0, 2000.0, "N/m^2", "Raymer Table 5.5: 290 (sailplane) - 1900 (twin turboprop)"),
+    "best propulsive efficiency (thrusting nodes)": (0.0, 0.92, "-",
+                                                      "best measured full-scale 0.915-0.92 (NACA TN 2881)"),
 }
 
 
@@ -61,10 +71,25 @@ def _values(run: Path) -> dict:
         m = read_csv(run / "mission.csv")
         if "tip_mach" in m:
             v["maximum tip Mach number"] = float(np.nanmax(m["tip_mach"]))
+        if {"thrust_power_W", "thrust_N", "shaft_power_W"} <= set(m):
+            v.update(_best_propulsive_efficiency(m))
     design = _json(run / "design.json") or {}
     if "togw_kg" in design and geom.get("reference_area_m2"):
         v["wing loading W/S"] = design["togw_kg"] * G0 / geom["reference_area_m2"]
     return v
+
+
+def _best_propulsive_efficiency(m) -> dict:
+    """The best net propulsive efficiency ``thrust_power_W / shaft_power_W`` (``mission.csv``:
+    the rotors' force along the flight path times the speed, over shaft power) over the nodes
+    where thrust, shaft power and thrust power are all positive.  Not the axial figure
+    ``propulsive_efficiency`` (thrust times the axial inflow): an inclined rotor that the
+    edgewise flow helps to turn (a tilt-wing's descending transition) exceeds 1 on it."""
+    T, P, Pt = (np.asarray(m[k], float) for k in ("thrust_N", "shaft_power_W", "thrust_power_W"))
+    ok = (T > 0) & (P > 0) & (Pt > 0)
+    if not ok.any():
+        return {}
+    return {"best propulsive efficiency (thrusting nodes)": float(np.max(Pt[ok] / P[ok]))}
 
 
 def design_checks(run_dir) -> list[dict]:
