@@ -218,3 +218,20 @@ def test_the_mean_wake_refuses_a_core_without_its_table():
                          blades=3, spin=1, core_rel=0.051)
     with pytest.raises(InputError, match="core_rel: one of 0.05, 0.1"):
         wake.mean_wake_velocity(np.array([[1.0], [0.5], [0.0]]), rot, np.full(4, 10.0), 150.0, 70.0)
+
+
+def test_wake_rings_are_the_bemt_panels():
+    """One definition of the station layout: the rings a rotor's wake sheds its circulation from
+    are the BEMT's own panels (``RotorGeometry.station_edges``), each station inside its ring,
+    the ring widths the panel widths the BEMT integrates with."""
+    from mdo.rotor import RotorGeometry
+    from mdo.rotor.geometry import station_layout
+    from mdo.wake import WakeRotor
+    g = RotorGeometry(radius_m=1.0, blades=3, r_over_R=np.array([0.2, 0.6, 1.0]),
+                      chord_over_R=np.array([0.1, 0.1, 0.05]), beta_rad=np.array([0.6, 0.35, 0.2]))
+    for n in (8, 16):
+        edges = WakeRotor.from_geometry(g, (0.0, 0.0, 0.0), n_stations=n).s_edges
+        st = g.stations(n)
+        assert np.allclose(np.diff(edges), (1.0 - g.hub_fraction) * station_layout(n)[1], rtol=0, atol=1e-15)
+        assert np.all((edges[:-1] < st["r_over_R"]) & (st["r_over_R"] < edges[1:]))
+        assert edges[0] == g.hub_fraction and edges[-1] == pytest.approx(1.0, abs=1e-15)

@@ -37,6 +37,7 @@ __all__ = [
     "RotorGeometry",
     "station_layout",
     "station_r_over_R",
+    "station_edges_r_over_R",
     "placed_stations",
     "read_geometry_csv",
     "write_geometry_csv",
@@ -47,15 +48,27 @@ DATA_DIR = Path(__file__).resolve().parent / "data"
 GEOMETRY_COLUMNS = ("r_over_R", "c_over_R", "beta_deg")
 
 
-def station_layout(n: int) -> tuple[np.ndarray, np.ndarray]:
-    """Nondimensional BEMT stations ``s_i`` in (0, 1) and panel widths ``ds_i`` (sum 1)."""
+def _twice_edges(n) -> np.ndarray:
+    """``2 e_k = 1 - cos(pi k / n)``, k = 0..n: the panel edges, the one definition of the layout's
+    spacing (the BEMT's stations and panel widths, the wake's ring edges)."""
     if int(n) != n or n < 2:
         raise InputError("n_stations", f"must be an integer >= 2, got {n!r}")
+    return 1.0 - np.cos(np.pi * np.arange(int(n) + 1) / int(n))
+
+
+def station_layout(n: int) -> tuple[np.ndarray, np.ndarray]:
+    """Nondimensional BEMT stations ``s_i`` in (0, 1) and panel widths ``ds_i`` (sum 1)."""
+    edges = 0.5 * _twice_edges(n)
     n = int(n)
-    k = np.arange(n + 1)
-    edges = 0.5 * (1.0 - np.cos(np.pi * k / n))
     s = 0.5 * (1.0 - np.cos(np.pi * (np.arange(n) + 0.5) / n))
     return s, np.diff(edges)
+
+
+def station_edges_r_over_R(n: int, hub_fraction: float) -> np.ndarray:
+    """r/R of the ``n + 1`` panel edges around the ``n`` BEMT stations, ``h + (1 - h) e_k``: the
+    ring edges of the rotor's wake (``mdo.wake.WakeRotor.from_geometry``), so that each ring
+    sheds the circulation of its own station."""
+    return hub_fraction + (1.0 - hub_fraction) * 0.5 * _twice_edges(n)
 
 
 def station_r_over_R(n: int, hub_fraction: float) -> np.ndarray:
@@ -217,6 +230,10 @@ class RotorGeometry:
         xr = self.r_over_R
         xc = np.clip(x, xr[0], xr[-1])
         return PchipInterpolator(xr, values, extrapolate=False)(xc)
+
+    def station_edges(self, n: int = 20) -> np.ndarray:
+        """r/R of the panel edges around the ``n`` BEMT stations (:func:`station_edges_r_over_R`)."""
+        return station_edges_r_over_R(n, self.hub_fraction)
 
     def stations(self, n: int = 20) -> dict:
         """Geometry at the ``n`` BEMT stations (see module docstring).

@@ -63,18 +63,16 @@ class WakeRotor:
                       core_rel: float = DEFAULT_CORE_REL, name: str | None = None) -> "WakeRotor":
         """Adapter from an ``mdo.rotor.RotorGeometry``.
 
-        The BEMT (mdo.rotor) evaluates Γ at the midpoints of cosine-spaced panels
-        whose edges are r/R = h + (1 − h)(1 − cos(πk/n))/2, k = 0..n
-        (``mdo.rotor.geometry`` docstring); those edges are the ring edges here.
+        The BEMT (mdo.rotor) evaluates Γ at the midpoints of its panels; their edges,
+        ``geometry.station_edges(n_stations)`` (``mdo.rotor.geometry``, the one definition of
+        the layout), are the ring edges here.
         ``geometry.rotation`` is the sense about the thrust direction, the wake axis is
         opposite to it, so spin = −rotation.  ``axis`` is the wake axis in the wing's
         frame (default +x: a tractor rotor in cruise; the geometry's own ``axis`` is in
         its owner's frame and is not used); ``radius_m`` (e.g. a design variable)
         defaults to the geometry's radius.
         """
-        h = float(geometry.hub_fraction)
-        k = np.arange(n_stations + 1)
-        edges = h + (1.0 - h) * 0.5 * (1.0 - np.cos(np.pi * k / n_stations))
+        edges = np.asarray(geometry.station_edges(n_stations), dtype=float)
         ax = axis if axis is not None else (1.0, 0.0, 0.0)
         return cls(center=center, axis=ax, radius_m=geometry.radius_m if radius_m is None else radius_m,
                    s_edges=edges, blades=int(geometry.blades), spin=-int(geometry.rotation),
