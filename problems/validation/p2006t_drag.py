@@ -51,6 +51,7 @@ Run: ``python problems/validation/p2006t_drag.py`` -> ``results/validation/p2006
 """
 from __future__ import annotations
 
+import csv
 import dataclasses
 import json
 import math
@@ -255,9 +256,14 @@ def total_wetted_area(bu):
     return s
 
 
+def wetted_aspect_ratio(bu, span_m):
+    """b^2 / S_wet with the build-up's wetted area."""
+    return span_m ** 2 / total_wetted_area(bu)
+
+
 def raymer_ld_max(bu, span_m, k_ld=RAYMER_K_LD_RETRACTABLE_PROP):
     """Raymer's class trend (L/D)max = K_LD sqrt(b^2 / S_wet) for the build-up's wetted area."""
-    return k_ld * math.sqrt(span_m ** 2 / total_wetted_area(bu))
+    return k_ld * math.sqrt(wetted_aspect_ratio(bu, span_m))
 
 
 def model_ld_max(op, span_m, s_ref_m2):
@@ -271,7 +277,6 @@ def mission_cruise_polar(run_dir, s_ref_m2):
     path = pathlib.Path(run_dir)
     if not (path / "mission.csv").exists():
         return None
-    import csv
     rows = [r for r in csv.DictReader((path / "mission.csv").open()) if r["segment"] == "CR"]
     span = json.loads((path / "design.json").read_text())["wings"]["main_wing"]["span_m"]
     mean = lambda k: sum(float(r[k]) for r in rows) / len(rows)
@@ -282,7 +287,7 @@ def mission_cruise_polar(run_dir, s_ref_m2):
 
 
 def ld_against_class(bu, res):
-    """Rows (label, span m, S_wet/S_ref, Raymer (L/D)max at K_LD 11 and 9, the model's (L/D)max,
+    """Rows (label, span m, S_wet/S_ref, b^2/S_wet, Raymer (L/D)max at K_LD 11 and 9, the model's (L/D)max,
     its Oswald e, the model's L/D at its cruise point): the P2006T build-up as stated and calibrated, and the
     GA-2P baseline and optimum of the committed run folders (their wing on this airframe)."""
     main = _ga_airframe()[0]
@@ -291,7 +296,8 @@ def ld_against_class(bu, res):
     rows = []
     for label, op, b in (("P2006T build-up, 7000 ft full throttle (stated 10 % leakage)", res["cruise_pp"], bu),
                          ("the same with the catalog's calibration", c_cal, cal)):
-        rows.append((label, main.span_m, total_wetted_area(b) / b.s_ref_m2, raymer_ld_max(b, main.span_m),
+        rows.append((label, main.span_m, total_wetted_area(b) / b.s_ref_m2, wetted_aspect_ratio(b, main.span_m),
+                     raymer_ld_max(b, main.span_m),
                      raymer_ld_max(b, main.span_m, RAYMER_K_LD_FIXED_GEAR_PROP),
                      model_ld_max(op, main.span_m, b.s_ref_m2), op["e"], op["CL"] / op["CD"]))
     for label, run_dir in (("GA-2P baseline, cruise (mission nodes)", ROOT / "results/ga2p/analysis"),
@@ -301,7 +307,8 @@ def ld_against_class(bu, res):
             continue
         taper = json.loads((run_dir / "design.json").read_text())["wings"]["main_wing"]["taper"]
         b = build_p2006t(m["span_m"], taper)
-        rows.append((label, m["span_m"], total_wetted_area(b) / b.s_ref_m2, raymer_ld_max(b, m["span_m"]),
+        rows.append((label, m["span_m"], total_wetted_area(b) / b.s_ref_m2, wetted_aspect_ratio(b, m["span_m"]),
+                     raymer_ld_max(b, m["span_m"]),
                      raymer_ld_max(b, m["span_m"], RAYMER_K_LD_FIXED_GEAR_PROP), m["ld_max"], m["e"], m["L/D"]))
     return rows
 
@@ -552,9 +559,9 @@ at constant indicated speed, so part of the excess power accelerates it as the a
 
 
 def _ld_section(res):
-    rows = "\n".join(f"| {lab} | {b:.2f} | {sw:.2f} | {b * b / (sw * 14.76):.2f} | {r11:.1f} | {r9:.1f} | {m:.1f} "
+    rows = "\n".join(f"| {lab} | {b:.2f} | {sw:.2f} | {aw:.2f} | {r11:.1f} | {r9:.1f} | {m:.1f} "
                      f"({m / r11 - 1:+.0%}) | {e:.3f} | {c:.1f} ({c / r11:.0%}) |"
-                     for lab, b, sw, r11, r9, m, e, c in res["ld_class"])
+                     for lab, b, sw, aw, r11, r9, m, e, c in res["ld_class"])
     return f"""## L/D against the class
 
 Raymer's trend of (L/D)max with the wetted aspect ratio b²/S_wet (*Aircraft Design: A
