@@ -21,6 +21,10 @@ constraints).  Each range with its basis:
   constant-speed GA propellers cruise at 0.80-0.85 (Gudmundsson, *General Aviation Aircraft
   Design*, 2014, ch. 14).  Above it an isolated blade's figure is better than any measured
   one: the design is worth a second look (nacelle and spinner blockage, shank losses).
+* the propellers' tip clearance to the fuselage at least one inch (``geometry.json``: each disk
+  off the symmetry plane against the body's elliptical cross-section in its plane,
+  ``mdo.vehicle.config.fuselage_gaps_m``): 14 CFR 23.925(d)(1).  An optimization holds it as a
+  constraint (``DesignBounds.fuselage_clearance_m``); the analysis of a given design reports it here.
 * wing loading ``W/S`` in [50, 2000] N/m^2 (``design.json`` TOGW, ``geometry.json``
   reference area): Raymer, *Aircraft Design: A Conceptual Approach*, Table 5.5 (typical
   take-off wing loadings) runs from 6 lb/ft^2 (290 N/m^2, sailplanes) to 40 lb/ft^2
@@ -35,6 +39,8 @@ from pathlib import Path
 import numpy as np
 
 from ..core.units import G0
+from ..vehicle.config import (PROPELLER_STRUCTURE_CLEARANCE_M, fuselage_gaps_m,
+                              fuselage_section_scale)
 
 __all__ = ["CHECKS", "design_checks", "write_design_checks", "checks_markdown"]
 
@@ -46,6 +52,8 @@ CHECKS = {
     "wing loading W/S": (50.0, 2000.0, "N/m^2", "Raymer Table 5.5: 290 (sailplane) - 1900 (twin turboprop)"),
     "best propulsive efficiency (thrusting nodes)": (0.0, 0.92, "-",
                                                       "best measured full-scale 0.915-0.92 (NACA TN 2881)"),
+    "propeller tip clearance to the fuselage": (PROPELLER_STRUCTURE_CLEARANCE_M, math.inf, "m",
+                                                "14 CFR 23.925(d)(1): one inch radial to the structure"),
 }
 
 
@@ -73,10 +81,28 @@ def _values(run: Path) -> dict:
             v["maximum tip Mach number"] = float(np.nanmax(m["tip_mach"]))
         if {"thrust_power_W", "thrust_N", "shaft_power_W"} <= set(m):
             v.update(_best_propulsive_efficiency(m))
+    gap = _fuselage_clearance(geom)
+    if gap is not None:
+        v["propeller tip clearance to the fuselage"] = gap
     design = _json(run / "design.json") or {}
     if "togw_kg" in design and geom.get("reference_area_m2"):
         v["wing loading W/S"] = design["togw_kg"] * G0 / geom["reference_area_m2"]
     return v
+
+
+def _fuselage_clearance(geom: dict):
+    """The smallest distance (m) from a rotor disk's rim to the fuselage (``geometry.json``), over the
+    disks off the symmetry plane whose plane crosses the body; None when there is none."""
+    f, best = geom.get("fuselage"), None
+    for r in geom.get("rotors", []) if f else []:
+        x, y, z = r["center_m"]
+        k = float(fuselage_section_scale((x - f["nose_x_m"]) / f["length_m"]))
+        if y <= 1e-6 or k <= 0.0:
+            continue
+        gap = min(fuselage_gaps_m(0.5 * f["width_m"] * k, 0.5 * f["height_m"] * k, f["axis_z_m"], y, z,
+                                  r["radius_m"]))
+        best = gap if best is None else min(best, gap)
+    return best
 
 
 def _best_propulsive_efficiency(m) -> dict:

@@ -7,9 +7,10 @@
 ``geometry.json`` holds numbers only (SI): ``surfaces`` (one entry per half, ``le`` and
 ``te`` as 3 x E point lists), ``fuselage`` (length, width, height, nose x, axis z),
 ``rotors`` (centre, radius, spin, axis), ``blades``, ``wake`` (helix pitch at mid-cruise)
-and ``reference_area_m2``.  The fuselage is drawn as a body of elliptical cross-section
-(an ogive nose over the first 20 % of its length, a straight tail cone over the last
-50 % down to 12 % of the maximum section): an illustration, not the drag model's body.
+and ``reference_area_m2``.  The fuselage is drawn as the body of elliptical cross-section
+that the propellers' clearance reads (``mdo.vehicle.config.fuselage_section_scale``: an
+elliptical nose over the first 20 % of its length, a straight tail cone over the last 50 %
+down to 12 % of the maximum section), not the drag model's body.
 """
 from __future__ import annotations
 
@@ -19,6 +20,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..vehicle.config import fuselage_section_scale as fuselage_profile  # the one body shape
 from .units import unit_system
 
 __all__ = ["read_geometry", "rotor_surfaces", "fuselage_profile", "plot_geometry", "plot_planform"]
@@ -31,14 +33,6 @@ def read_geometry(path) -> dict:
         s["le"] = np.asarray(s["le"], float)
         s["te"] = np.asarray(s["te"], float)
     return g
-
-
-def fuselage_profile(s):
-    """Local section size over the maximum, at ``s`` = x/length in [0, 1] (see module doc)."""
-    s = np.asarray(s, float)
-    nose = np.sqrt(np.clip(1.0 - (1.0 - s / 0.2) ** 2, 0.0, 1.0))
-    tail = 1.0 - 0.88 * np.clip((s - 0.5) / 0.5, 0.0, 1.0)
-    return np.where(s < 0.2, nose, tail)
 
 
 def rotor_surfaces(g: dict) -> list:

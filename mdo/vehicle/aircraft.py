@@ -87,7 +87,7 @@ from .aircraft_tilt import WingTiltMixin
 from .aircraft_nodes import _num, _row, node_outputs, operating_limits, wing_design_lift_rows
 from .balance import add_balance, trim_residuals, trim_unknowns, trim_upwash
 from .base import G0, NodeEvaluation, Output, ResidualGroup, State, Unknown
-from .config import VehicleConfig, WingConfig
+from .config import PROPELLER_STRUCTURE_CLEARANCE_M, VehicleConfig, WingConfig
 from .engine_out import add_fin_design, engine_out_option
 from .mass import MassDesign, solve_togw, total_mass
 from .rotor_group import RotorGroupModel
@@ -128,6 +128,9 @@ class DesignBounds:
     twist_deg: tuple = (-8.0, 8.0)         # absolute
     span_eta: tuple = (0.0, 1.0)           # absolute (fraction of the semispan)
     tip_clearance_m: float = 0.05          # between neighbouring disks, and disk to symmetry plane
+    # the innermost disk of each lifting wing to the fuselage's side (14 CFR 23.925(d)(1): one inch;
+    # mdo.vehicle.config.PROPELLER_STRUCTURE_CLEARANCE_M); None: not checked
+    fuselage_clearance_m: float | None = PROPELLER_STRUCTURE_CLEARANCE_M
 
 
 class Aircraft(AircraftGeometryMixin, AirframeDragMixin, WingTiltMixin):

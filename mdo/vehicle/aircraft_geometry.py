@@ -15,7 +15,7 @@ import numpy as np
 from ..core.smooth import smooth_max, smooth_min
 from ..wake import WakeRotor, spin_for, wake_influences
 from ..wing import VLM, Body, constant_area, trapezoid
-from .config import disks_in_one_plane
+from .config import disks_in_one_plane, fuselage_gaps_m
 from .rotor_group import section_name
 from .wing_structure import strength_sized_tip_deflection
 
@@ -186,7 +186,8 @@ class AircraftGeometryMixin:
         return out
 
     def _no_overlap(self, problem):
-        """Disks must not overlap each other (any groups) or cross the symmetry plane (Eq. 7's R_max)."""
+        """Disks must not overlap each other (any groups) or cross the symmetry plane (Eq. 7's R_max),
+        and the innermost disk of each wing must clear the fuselage's side (``_fuselage_gaps``)."""
         cl = self.bounds.tip_clearance_m
         for w in self.lifting_wings:
             span = self.design["wings"][w.name]["span"]
@@ -195,10 +196,11 @@ class AircraftGeometryMixin:
                 g = gm.config
                 if w.name in g.wings:
                     disks += [(float(g.span_eta[i]), gm.design["eta"][i] * span / 2, gm.design["R"], f"{g.name}[{i}]",
-                               g.name, g.x_ahead_of_le_m) for i in range(len(g.span_eta))]
+                               g.name, g.x_ahead_of_le_m, g.z_below_wing_m) for i in range(len(g.span_eta))]
             if not disks:
                 continue
             disks.sort(key=lambda t: t[0])
+            self._fuselage_gaps(problem, w, disks[0])
             gaps = [disks[0][1] - disks[0][2] - 0.5 * cl]
             labels = [f"{w.name} inner disk to symmetry plane"]
             for a, b in zip(disks[:-1], disks[1:]):
@@ -208,4 +210,23 @@ class AircraftGeometryMixin:
                 labels.append(f"{w.name} disks {a[3]}-{b[3]}")
             problem.constrain(f"disk clearance ({w.name})", ca.vertcat(*gaps), kind=">=", scale=0.1, unit="m",
                               labels=labels)
+
+    def _fuselage_gaps(self, problem, w, disk):
+        """The wing's innermost disk clears the fuselage's side by ``bounds.fuselage_clearance_m`` (14 CFR
+        23.925(d)(1)): its rim against points of the body's elliptical cross-section in the disk's plane
+        (``mdo.vehicle.config.fuselage_gaps_m``), with the disk in the wing-borne attitude (its axis
+        along the body's x; a tilt-wing's hover attitude is not checked).  The cross-section is the
+        one at the baseline disk's plane (the plane moves by centimetres with taper and position)."""
+        if self.bounds.fuselage_clearance_m is None:
+            return
+        eta0, y, R, label, _, x_ahead, z_below = disk
+        c_r0 = 2.0 * w.area_m2 / (w.span_m * (1.0 + w.taper))       # the baseline planform's root chord
+        x0 = w.root_le_x_m + 0.25 * c_r0 * (1.0 - w.taper) * eta0 - x_ahead
+        a, b = self.config.fuselage.section_half_axes(x0)
+        if a <= 0.0:
+            return                                                   # the disk's plane misses the body
+        gaps = fuselage_gaps_m(a, b, self.config.fuselage_axis_z_m, y, w.root_z_m - z_below, R)
+        problem.constrain(f"fuselage clearance ({w.name})",
+                          ca.vertcat(*gaps) - self.bounds.fuselage_clearance_m, kind=">=", scale=0.1, unit="m",
+                          labels=[f"{label} rim to the fuselage, section point {k}" for k in range(len(gaps))])
 

@@ -151,6 +151,40 @@ class WingConfig:
         return 2.0 / 3.0 * self.root_chord_m * (1 + t + t * t) / (1 + t)
 
 
+def fuselage_section_scale(s):
+    """The fuselage's cross-section size over its largest, at ``s`` = (x - nose x)/length in [0, 1]
+    (NumPy; 0 outside): an elliptical nose (a quarter ellipse over the first 20 % of the length),
+    the full section to mid-length, a straight tail cone down to 12 % at the end.  A layout
+    estimate of a light aircraft's body, the one shape the propellers' clearance
+    (:meth:`FuselageConfig.section_half_axes`) and the drawings (``mdo.plots.geometry``) read; the
+    drag build-up uses the wetted area and fineness instead."""
+    s = np.asarray(s, float)
+    nose = np.sqrt(np.clip(1.0 - (1.0 - s / 0.2) ** 2, 0.0, 1.0))
+    tail = 1.0 - 0.88 * np.clip((s - 0.5) / 0.5, 0.0, 1.0)
+    return np.where((s < 0.0) | (s > 1.0), 0.0, np.where(s < 0.2, nose, tail))
+
+
+# 14 CFR 23.925(d)(1) (Part 23 before amendment 23-64; 25.925(c)(1) the same): "at least one
+# inch radial clearance between the blade tips and the airplane structure, plus any additional
+# radial clearance necessary to prevent harmful vibration"
+PROPELLER_STRUCTURE_CLEARANCE_M = 0.0254
+# points on the side of the body's elliptical cross-section toward a disk (fuselage_gaps_m); the
+# polygon through them lies inside the ellipse by at most (pi b / 2(n-1))^2 / (8 rho_min), under
+# 2 mm for the GA body (b = 0.79 m, rho_min = a^2/b = 0.36 m)
+FUSELAGE_SECTION_POINTS = 33
+
+
+def fuselage_gaps_m(half_width, half_height, axis_z, y, z, radius):
+    """Distance (m) from the rim of a rotor disk (centre at lateral ``y`` and height ``z``,
+    ``radius``, its plane a body cross-section) to each of ``FUSELAGE_SECTION_POINTS`` points of
+    the fuselage's elliptical cross-section in that plane (half axes ``half_width``,
+    ``half_height``, centre at ``axis_z``), on the side toward y > 0: a list, negative where the
+    disk cuts into the body.  ``y``, ``z``, ``radius`` may be numbers or CasADi symbols."""
+    t = np.linspace(-0.5 * math.pi, 0.5 * math.pi, FUSELAGE_SECTION_POINTS)
+    return [((y - half_width * math.cos(tk)) ** 2 + (z - axis_z - half_height * math.sin(tk)) ** 2) ** 0.5 - radius
+            for tk in t]
+
+
 @dataclass(frozen=True)
 class FuselageConfig:
     length_m: float
@@ -172,8 +206,16 @@ class FuselageConfig:
     crossflow_drag_coefficient: float = 1.2
     crossflow_eta: float = 0.6
     planform_area_m2: float | None = None
+    # where the body sits (body axes, m): its nose's x, and the height of its axis; None puts
+    # its top at the highest lifting wing's root, a high wing like the P2006T's
+    # (VehicleConfig.fuselage_axis_z_m).  Read by the propellers' clearance to the fuselage.
+    nose_x_m: float = 0.0
+    axis_z_m: float | None = None
 
     def __post_init__(self):
+        check_range("fuselage.nose_x_m", self.nose_x_m, -50.0, 100.0, "m")
+        if self.axis_z_m is not None:
+            check_range("fuselage.axis_z_m", self.axis_z_m, -20.0, 20.0, "m")
         for k in ("length_m", "width_m", "height_m", "wetted_area_m2", "tail_arm_m"):
             check_positive(f"fuselage.{k}", getattr(self, k), "m" if k != "wetted_area_m2" else "m^2")
         check_range("fuselage.pitching_moment_factor", self.pitching_moment_factor, 0.0, 0.1)
@@ -182,6 +224,12 @@ class FuselageConfig:
         if self.planform_area_m2 is not None:
             check_range("fuselage.planform_area_m2", self.planform_area_m2, 1e-3, self.length_m * self.width_m,
                         "m^2")
+
+    def section_half_axes(self, x_m: float) -> tuple:
+        """Half width and half height (m) of the elliptical cross-section at body station
+        ``x_m`` (both 0 ahead of the nose and behind the tail): :func:`fuselage_section_scale`."""
+        k = float(fuselage_section_scale((x_m - self.nose_x_m) / self.length_m))
+        return 0.5 * self.width_m * k, 0.5 * self.height_m * k
 
     @property
     def planform_area(self) -> float:
@@ -394,6 +442,15 @@ class VehicleConfig:
                     raise InputError(f"{gb}.span_eta",
                                      f"rotors at y = {ya:.3f} m ({ga}) and {yb:.3f} m ({gb}) on {wn} overlap: "
                                      f"allowed spacing >= R1 + R2 = {Ra + Rb:.3f} m, got {yb - ya:.3f} m")
+
+    @property
+    def fuselage_axis_z_m(self) -> float:
+        """Height of the fuselage's axis (body z, m): ``fuselage.axis_z_m``, or with None the
+        body's top at the highest lifting wing's root (a high wing)."""
+        f = self.fuselage
+        if f.axis_z_m is not None:
+            return float(f.axis_z_m)
+        return max(w.root_z_m for w in self.lifting_wings) - 0.5 * f.height_m
 
     def wing(self, name: str) -> WingConfig:
         for w in self.wings:

@@ -181,8 +181,6 @@ def _geometry_numbers(vehicle, mission, solution, k: int) -> dict:
                  "te": _val(solution, h["te"]).tolist()} for h in vehicle.vlm.outline()]
     surfaces += [_fin_outline(w) for w in vehicle.config.wings if w.vertical]   # not in the lattice
     f = vehicle.config.fuselage
-    # drawing assumption: the fuselage top at the highest wing root (high wings, tandem tilt-wings)
-    top_z = max(w.root_z_m for w in vehicle.lifting_wings)
     V = float(_val(solution, mission.cond.speed_mps).ravel()[k])
     rotors, pitch0 = [], None
     for gm in vehicle.groups:
@@ -199,8 +197,8 @@ def _geometry_numbers(vehicle, mission, solution, k: int) -> dict:
                            "spin": float(rot.spin), "blades": int(gm.config.blades), "pitch_m": pitch,
                            "axis": [float(a) for a in np.asarray(rot.axis, float).ravel()]})
     return {"name": vehicle.name, "surfaces": surfaces,
-            "fuselage": {"length_m": f.length_m, "width_m": f.width_m, "height_m": f.height_m, "nose_x_m": 0.0,
-                         "axis_z_m": top_z - 0.5 * f.height_m},
+            "fuselage": {"length_m": f.length_m, "width_m": f.width_m, "height_m": f.height_m, "nose_x_m": f.nose_x_m,
+                         "axis_z_m": vehicle.config.fuselage_axis_z_m},
             "rotors": rotors, "blades": int(vehicle.groups[0].config.blades),   # the group of blade.csv
             "wake": {"pitch_m": pitch0, "node": int(k), "speed_mps": V},
             "reference_area_m2": float(_val(solution, vehicle.S_ref)),
