@@ -257,3 +257,21 @@ def test_hub_of_a_steeply_pitched_blade_has_its_root_past_pi_over_2():
     st = station_physics(ph, r[0], 0.1, twist[0] + math.radians(45), 78.0, 65.7 * r[0], RHO, MU, A, 3, R, h * R, sec)
     assert np.all(np.isfinite(st["W"])) and np.all(np.isfinite(st["v"]))
     assert abs(st["W"][1] - 0.5 * (st["W"][0] + st["W"][2])) < 1e-3 * st["W"][1]   # smooth through pi/2
+
+
+def test_power_budget_closes_and_induced_exceeds_the_actuator_disk():
+    # an APC-like blade in axial flow at three advance ratios: the lift's and the drag's work
+    # add up to the shaft power beyond T V, and no blade does better than Froude's disk
+    from mdo.rotor.geometry import DATA_DIR
+    rot = RotorGeometry.from_csv(DATA_DIR / "apce_10x7_geometry.csv", diameter_m=0.254, blades=2,
+                                 airfoil="e63:0.5:clark_y")
+    n = 5000.0 / 60.0
+    J = np.array([0.3, 0.5, 0.6])
+    res = analyze(rot, omega_radps=2 * math.pi * n, v_axial_mps=J * n * 0.254, n_stations=20)
+    b = res.power_budget()
+    assert np.all(np.abs(b["closure"]) < 1e-9 * b["shaft"])
+    assert b["useful"] / b["shaft"] == pytest.approx(np.asarray(res["eta"]), rel=1e-9)
+    assert np.all(b["induced"] > b["ideal_induced"]) and np.all(b["ideal_induced"] > 0)
+    assert np.all(b["profile"] > 0)
+    with pytest.raises(Exception, match="power_budget"):
+        analyze(rot, omega_radps=500.0, v_axial_mps=5.0, v_inplane_mps=3.0, n_stations=8).power_budget()

@@ -302,6 +302,39 @@ class RotorResult:
     def keys(self):
         return self.values.keys()
 
+    def power_budget(self) -> dict:
+        """Where the shaft power goes, per operating point (axial flow, from :func:`analyze`): W.
+
+        With ``W cos(phi) = Omega r - v`` and ``W sin(phi) = V + u`` the element's share of
+        ``P - T V`` splits exactly into the lift's work on the induced velocities and the drag's::
+
+            P_induced = sum B q c cl (v sin(phi) + u cos(phi)) dr,
+            P_profile = sum B q c cd (W + v cos(phi) - u sin(phi)) dr,     q = rho W^2 / 2,
+
+        and ``ideal_induced`` is the actuator disk's induced power at the same thrust on the whole
+        disk, ``T V (1/eta_i - 1)``, ``eta_i = 2/(1 + sqrt(1 + T/(q_inf pi R^2)))`` (Froude):
+        what no blade can avoid at that disk loading; ``induced - ideal_induced`` is the swirl,
+        tip and hub losses and the departure from ideal loading.  Keys: ``shaft``, ``useful``
+        (``T V``), ``induced``, ``ideal_induced``, ``profile``, ``disk_loading`` (``T/(q_inf
+        pi R^2)``) and ``closure`` (``shaft - useful - induced - profile``: quadrature only)."""
+        inp, st = self.inputs, self.stations
+        if not st or np.any(np.asarray(inp["v_inplane_mps"], float) > 0):
+            raise InputError("power_budget", "needs an axial-flow result of analyze() (no in-plane inflow)")
+        V = np.asarray(inp["v_axial_mps"], float)
+        rho, B, R = float(inp["rho_kgpm3"]), float(inp["blades"]), float(inp["radius_m"])
+        phi, W, u, v = (np.asarray(self.values[k], float) for k in ("phi_rad", "W_mps", "u_mps", "v_mps"))
+        qc = 0.5 * rho * W ** 2 * np.asarray(st["chord_m"], float)[:, None] * B * np.asarray(st["dr_m"], float)[:, None]
+        induced = np.sum(qc * self.values["cl"] * (v * np.sin(phi) + u * np.cos(phi)), axis=0)
+        profile = np.sum(qc * self.values["cd"] * (W + v * np.cos(phi) - u * np.sin(phi)), axis=0)
+        T, P = np.asarray(self.values["thrust_N"], float), np.asarray(self.values["power_W"], float)
+        useful = T * V
+        with np.errstate(divide="ignore", invalid="ignore"):
+            tc = T / (0.5 * rho * V ** 2 * math.pi * R ** 2)
+            eta_i = 2.0 / (1.0 + np.sqrt(1.0 + tc))
+            ideal = np.where(V > 0, useful * (1.0 / eta_i - 1.0), np.nan)
+        return {"shaft": P, "useful": useful, "induced": induced, "ideal_induced": ideal, "profile": profile,
+                "disk_loading": tc, "closure": P - useful - induced - profile}
+
 
 def operating_inputs(rotor: RotorGeometry, *, omega_radps, v_axial_mps=0.0, v_inplane_mps=0.0,
                      altitude_m=0.0, pitch_rad=None, rho_kgpm3=None, mu_Pas=None, a_mps=None,
