@@ -119,3 +119,28 @@ def test_cli_debug_shows_traceback(tmp_path):
     f.write_text("x = 1\n")
     r = _mdo("--debug", "run", f, "--out", tmp_path / "out")
     assert r.returncode == 2 and "Traceback" in r.stderr
+
+
+def test_design_level_limit_binds_an_optimization_and_is_lifted_for_a_frozen_design():
+    # min (x - 1)^2 + y^2 with a design-level limit x >= 2 and a node-like limit y >= 0.5
+    def build():
+        p = Problem("design_level")
+        x = p.variable("x", init=1.0, lower=-10, upper=10, design=True)
+        y = p.variable("y", init=1.0, lower=-10, upper=10)
+        p.constrain("clearance", x, kind=">=", rhs=2.0, design_level=True)
+        p.constrain("y limit", y, kind=">=", rhs=0.5)
+        p.minimize((x - 1.0) ** 2 + y ** 2)
+        return p, x, y
+    p, x, _ = build()
+    opt = p.solve(verbose=False)
+    assert opt.success and float(opt.value(x)) == pytest.approx(2.0, abs=1e-6)
+    frozen, x, y = build()
+    frozen.freeze_design()
+    sol = frozen.solve(verbose=False)
+    # the given design flies as it is (x stays 1); its violation of the limit is reported, the other limit holds
+    assert sol.success and float(sol.value(x)) == pytest.approx(1.0) and float(sol.value(y)) == pytest.approx(0.5, abs=1e-6)
+    worst = {v["group"]: v for v in sol.violations}
+    assert worst["clearance"]["max_violation"] == pytest.approx(1.0, abs=1e-6)
+    assert worst["y limit"]["max_violation"] < 1e-6
+    with pytest.raises(Exception, match="design_level"):
+        build()[0].constrain("bad", x, kind="==", design_level=True)

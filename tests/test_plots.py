@@ -287,14 +287,14 @@ def test_design_checks_flag_thin_blade(tmp_path):
 def test_design_checks_flag_a_propeller_better_than_any_measured():
     """The best net propulsive efficiency (rotor force along the path x speed / shaft power) is
     checked against the best measured full-scale propellers (0.92, NACA TN 2881): GA-2P's
-    optimum cruises at 0.926 and is flagged, its baseline (0.909) is not; the windmilling nodes
+    optimum cruises at 0.924 and is flagged, its baseline (0.909) is not; the windmilling nodes
     of its descent (thrust and shaft power both negative: ratios above 2) do not count."""
     from mdo.plots.checks import design_checks
     from mdo.plots.figures import read_csv
     key = "best propulsive efficiency (thrusting nodes)"
     opt = {c["quantity"]: c for c in design_checks(ROOT / "results" / "ga2p")}[key]
     base = {c["quantity"]: c for c in design_checks(ROOT / "results" / "ga2p" / "analysis")}[key]
-    assert not opt["ok"] and opt["value"] == pytest.approx(0.926, abs=1e-3)
+    assert not opt["ok"] and opt["value"] == pytest.approx(0.924, abs=1e-3)
     assert base["ok"] and base["value"] == pytest.approx(0.909, abs=1e-3)
     m = read_csv(ROOT / "results" / "ga2p" / "mission.csv")
     windmilling = (m["thrust_N"] < 0) & (m["shaft_power_W"] < 0)

@@ -49,6 +49,10 @@ class SolveError(RuntimeError):
         self.solution = solution
 
 
+# how far a frozen design's design-level limits are lifted (scaled units: the group's own scale)
+DESIGN_LEVEL_LIFT = 1e3
+
+
 @dataclass
 class Variable:
     name: str
@@ -148,6 +152,7 @@ class Problem(WarmStartMixin):
             "nlp_scaling_method": "gradient-based",
         }
         self._analysis = False
+        self._design_level_lifts: list = []   # parameters of the design-level groups (constrain)
         # the barriers of an optimization from its converged baseline, in the order tried: the
         # first with the divergence watch, the second if the first ends without an optimum
         # (start_from_baseline, fallback_barrier_after; DESIGN rule 7 in mdo/README.md)
@@ -235,15 +240,23 @@ class Problem(WarmStartMixin):
         return P
 
     def constrain(self, name: str, expr, *, kind: str = "==", rhs=0.0, scale=1.0,
-                  unit: str = "-", labels: Sequence[str] | None = None, defines: str | None = None):
+                  unit: str = "-", labels: Sequence[str] | None = None, defines: str | None = None,
+                  design_level: bool = False):
         """Add a named group ``expr (kind) rhs``, scaled by ``scale`` (a typical residual).
 
         ``defines``: the name of a variable ``v`` this equality defines, ``expr = v -
         f(other variables)`` with ``v`` at coefficient one (a lifted intermediate, e.g. a
         rotor's thrust at the nodes): the solve starts ``v`` at ``f`` of the initial point
-        (:meth:`start_defined`), whatever its own guess was."""
+        (:meth:`start_defined`), whatever its own guess was.
+
+        ``design_level``: an inequality on the design alone (a geometric limit, e.g. a
+        propeller's clearance to the fuselage): enforced while the design is free, lifted by
+        :meth:`freeze_design` (a given design is flown as it is; the group still reports its
+        value, so a violation shows in the solution's violations)."""
         if kind not in ("==", "<=", ">="):
             raise InputError(f"constraint {name!r} kind", f"must be '==', '<=' or '>=', got {kind!r}")
+        if design_level and kind == "==":
+            raise InputError(f"constraint {name!r} design_level", "only an inequality can be lifted")
         if name in self.groups:
             raise InputError("constraint group name", f"{name!r} is already defined")
         if not (np.isfinite(scale) and scale > 0):
@@ -252,7 +265,15 @@ class Problem(WarmStartMixin):
         n = int(r.numel())
         if n == 0:
             return
-        con = (r == 0) if kind == "==" else (r <= 0) if kind == "<=" else (r >= 0)
+        if design_level:
+            # r + lift >= 0 (r - lift <= 0): lift 0 while the design is free, DESIGN_LEVEL_LIFT once frozen
+            lift = self.opti.parameter(n, 1)
+            self.opti.set_value(lift, 0.0)
+            self._design_level_lifts.append(lift)
+            r_con = r + lift if kind == ">=" else r - lift
+        else:
+            r_con = r
+        con = (r_con == 0) if kind == "==" else (r_con <= 0) if kind == "<=" else (r_con >= 0)
         self.opti.subject_to(con)
         if labels is None:
             labels = [f"{name}[{i}]" for i in range(n)]
@@ -291,6 +312,8 @@ class Problem(WarmStartMixin):
                     continue
                 self.opti.subject_to(v.scaled == ca.DM(v.init / v.scale))
                 v.frozen = True
+        for lift in self._design_level_lifts:   # design-level limits: reported, not enforced
+            self.opti.set_value(lift, DESIGN_LEVEL_LIFT)
         self._analysis = True
 
     @property
