@@ -128,8 +128,7 @@ class DesignBounds:
     twist_deg: tuple = (-8.0, 8.0)         # absolute
     span_eta: tuple = (0.0, 1.0)           # absolute (fraction of the semispan)
     tip_clearance_m: float = 0.05          # between neighbouring disks, and disk to symmetry plane
-    # the innermost disk of each lifting wing to the fuselage's side (14 CFR 23.925(d)(1): one inch;
-    # mdo.vehicle.config.PROPELLER_STRUCTURE_CLEARANCE_M); None: not checked
+    # each wing's innermost disk to the fuselage's side (14 CFR 23.925(d)(1), 1 in); None: unchecked
     fuselage_clearance_m: float | None = PROPELLER_STRUCTURE_CLEARANCE_M
 
 
