@@ -39,8 +39,7 @@ from pathlib import Path
 import numpy as np
 
 from ..core.units import G0
-from ..vehicle.config import (PROPELLER_STRUCTURE_CLEARANCE_M, fuselage_gaps_m,
-                              fuselage_section_scale)
+from ..vehicle.config import PROPELLER_STRUCTURE_CLEARANCE_M, fuselage_gaps_m, fuselage_half_axes
 
 __all__ = ["CHECKS", "design_checks", "write_design_checks", "checks_markdown"]
 
@@ -96,11 +95,10 @@ def _fuselage_clearance(geom: dict):
     f, best = geom.get("fuselage"), None
     for r in geom.get("rotors", []) if f else []:
         x, y, z = r["center_m"]
-        k = float(fuselage_section_scale((x - f["nose_x_m"]) / f["length_m"]))
-        if y <= 1e-6 or k <= 0.0:
+        a, b = fuselage_half_axes(f["length_m"], f["width_m"], f["height_m"], f["nose_x_m"], x)
+        if y <= 1e-6 or a <= 0.0:
             continue
-        gap = min(fuselage_gaps_m(0.5 * f["width_m"] * k, 0.5 * f["height_m"] * k, f["axis_z_m"], y, z,
-                                  r["radius_m"]))
+        gap = min(fuselage_gaps_m(a, b, f["axis_z_m"], y, z, r["radius_m"]))
         best = gap if best is None else min(best, gap)
     return best
 

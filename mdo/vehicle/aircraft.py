@@ -57,11 +57,11 @@ approach from slipstreams carrying 0.2 kW of swirl).
 Frames: the mission's path frame (x forward, z up); the wing and wake use body
 axes with x aft, y starboard, z up (``mdo.wing``).
 
-Layout: this file holds ``DesignBounds`` and ``Aircraft`` in sections - design (the design
+Layout: this file holds ``Aircraft`` (its ``DesignBounds`` are in ``config.py``) in sections - design (the design
 variables, mass, wing design lifts), protocol (unknowns, states, ``evaluate`` and its rotor
 and aerodynamic parts), guesses.
 Beside it: ``aircraft_geometry.py`` (lattice surfaces, rotors, wakes, strip layout, bodies,
-disk clearance), ``viscous_wing.py`` (the strips on their section polars),
+disk and fuselage clearance), ``viscous_wing.py`` (the strips on their section polars),
 ``aircraft_tilt.py`` (a tilt-wing's wing-mounted angle: schedule or control),
 ``aircraft_nodes.py`` (the operating limits and ``mission.csv`` outputs at the
 nodes), ``aircraft_drag.py`` (the parasite drag build-up, flaps, drag device),
@@ -70,7 +70,6 @@ nodes), ``aircraft_drag.py`` (the parasite drag build-up, flaps, drag device),
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
 
 import casadi as ca
 import numpy as np
@@ -87,7 +86,7 @@ from .aircraft_tilt import WingTiltMixin
 from .aircraft_nodes import _num, _row, node_outputs, operating_limits, wing_design_lift_rows
 from .balance import add_balance, trim_residuals, trim_unknowns, trim_upwash
 from .base import G0, NodeEvaluation, Output, ResidualGroup, State, Unknown
-from .config import PROPELLER_STRUCTURE_CLEARANCE_M, VehicleConfig, WingConfig
+from .config import DesignBounds, VehicleConfig, WingConfig  # noqa: F401 (DesignBounds re-exported)
 from .engine_out import add_fin_design, engine_out_option
 from .mass import MassDesign, solve_togw, total_mass
 from .rotor_group import RotorGroupModel
@@ -95,41 +94,6 @@ from .stall_pattern import add_stall_pattern
 from .viscous_wing import viscous_rows, viscous_unknowns, viscous_upwash
 
 __all__ = ["Aircraft", "DesignBounds"]
-
-
-@dataclass
-class DesignBounds:
-    """Bounds of the design variables, as factors of the baseline (or absolute where noted).
-
-    These are ranges of validity of the models, not results: no bound is taken from a
-    published optimum.  Span is held by what it costs (the default ``WingStructure``: the
-    bending material grows with AR^1.5 and the wing's own lift share, and beyond the
-    limit-load tip deflection the stiffness material with AR^2; Raymer's Eq. 15.46 alone,
-    ``wing_structure=None``, grows with AR^0.6) and by ``Aircraft(max_span_m=...)`` when the
-    user has a hangar or gate limit; the box 0.6-3.0 x the baseline span is far outside
-    every committed optimum.  Taper by the
-    stall pattern of a wing with ailerons (``mdo.vehicle.stall_pattern``: the aileron span
-    still attached at the stall onset, which low taper without washout loses) and the stall
-    margin of the tip strips (cl_max falls with the tip chord's Reynolds number) - the box
-    0.2-1.0 keeps the planform a trapezoid with a tip chord the lattice and the section data
-    can carry; a wing without an aileron span (the TTW's, as defined) can sit on it.
-    Design speeds 0.05-2.0 x the baseline: the Adkins-Liebeck design is valid down to
-    V = 0 (hover), so the box only keeps its scale (``problems/ttw.py``: to the cruise speed); the design cl of
-    the blade sections by the design point's stall limit at each station's Reynolds
-    number (``design_cl_stall_rows``, the vehicle's stall margin) - the box 0.2-1.5
-    is the range of the Adkins-Liebeck design.
-    """
-    design_thrust: tuple = (0.3, 3.0)
-    design_speed: tuple = (0.05, 2.0)
-    tip_radius: tuple = (0.5, 1.6)
-    design_cl: tuple = (0.2, 1.5)          # absolute; held by stall at the design stations' Re
-    span: tuple = (0.6, 3.0)
-    taper: tuple = (0.2, 1.0)              # absolute
-    twist_deg: tuple = (-8.0, 8.0)         # absolute
-    span_eta: tuple = (0.0, 1.0)           # absolute (fraction of the semispan)
-    tip_clearance_m: float = 0.05          # between neighbouring disks, and disk to symmetry plane
-    # each wing's innermost disk to the fuselage's side (14 CFR 23.925(d)(1), 1 in); None: unchecked
-    fuselage_clearance_m: float | None = PROPELLER_STRUCTURE_CLEARANCE_M
 
 
 class Aircraft(AircraftGeometryMixin, AirframeDragMixin, WingTiltMixin):

@@ -22,6 +22,12 @@ from .wing_structure import strength_sized_tip_deflection
 __all__ = ["AircraftGeometryMixin"]
 
 
+def disk_plane_x(w, x_ahead_of_le_m, root_chord, taper, eta):
+    """Body x (m) of a disk at ``eta`` of wing ``w``'s semispan (numbers or symbols): the unswept
+    quarter chord moves the leading edge aft by (c_r - c(y))/4, the disk ``x_ahead_of_le_m`` ahead of it."""
+    return w.root_le_x_m + 0.25 * root_chord * (1 - taper) * eta - x_ahead_of_le_m
+
+
 class AircraftGeometryMixin:
     """Geometry of :class:`~mdo.vehicle.aircraft.Aircraft` (see the module docstring)."""
 
@@ -51,9 +57,8 @@ class AircraftGeometryMixin:
                     continue
                 for i in range(len(g.span_eta)):
                     e = d["groups"][g.name]["eta"][i]
-                    # unswept quarter chord: the leading edge moves aft by (c_r - c(y))/4
-                    x_le = w.root_le_x_m + 0.25 * c_r * (1 - taper) * e
-                    rotor_pos[g.name].append((x_le - g.x_ahead_of_le_m, e * semispan, w.root_z_m - g.z_below_wing_m))
+                    rotor_pos[g.name].append((disk_plane_x(w, g.x_ahead_of_le_m, c_r, taper, e), e * semispan,
+                                              w.root_z_m - g.z_below_wing_m))
         for t in self.tails:
             surfaces.append(trapezoid(t.name, t.span_m, t.root_chord_m, t.taper, airfoil=section_name(t.airfoil),
                                       nspan=self.tail_strips, nchord=self.nchord, origin=(t.root_le_x_m, 0.0, t.root_z_m),
@@ -220,8 +225,7 @@ class AircraftGeometryMixin:
         if self.bounds.fuselage_clearance_m is None:
             return
         eta0, y, R, label, _, x_ahead, z_below = disk
-        c_r0 = 2.0 * w.area_m2 / (w.span_m * (1.0 + w.taper))       # the baseline planform's root chord
-        x0 = w.root_le_x_m + 0.25 * c_r0 * (1.0 - w.taper) * eta0 - x_ahead
+        x0 = disk_plane_x(w, x_ahead, w.root_chord_m, w.taper, eta0)   # in the baseline planform
         a, b = self.config.fuselage.section_half_axes(x0)
         if a <= 0.0:
             return                                                   # the disk's plane misses the body

@@ -185,6 +185,13 @@ def fuselage_gaps_m(half_width, half_height, axis_z, y, z, radius):
             for tk in t]
 
 
+def fuselage_half_axes(length_m, width_m, height_m, nose_x_m, x_m) -> tuple:
+    """Half width and half height (m) of the body's elliptical cross-section at body station ``x_m``
+    (both 0 ahead of the nose and behind the tail): :func:`fuselage_section_scale` of the largest."""
+    k = float(fuselage_section_scale((x_m - nose_x_m) / length_m))
+    return 0.5 * width_m * k, 0.5 * height_m * k
+
+
 @dataclass(frozen=True)
 class FuselageConfig:
     length_m: float
@@ -226,10 +233,9 @@ class FuselageConfig:
                         "m^2")
 
     def section_half_axes(self, x_m: float) -> tuple:
-        """Half width and half height (m) of the elliptical cross-section at body station
-        ``x_m`` (both 0 ahead of the nose and behind the tail): :func:`fuselage_section_scale`."""
-        k = float(fuselage_section_scale((x_m - self.nose_x_m) / self.length_m))
-        return 0.5 * self.width_m * k, 0.5 * self.height_m * k
+        """Half width and half height (m) of the cross-section at body station ``x_m``
+        (:func:`fuselage_half_axes`)."""
+        return fuselage_half_axes(self.length_m, self.width_m, self.height_m, self.nose_x_m, x_m)
 
     @property
     def planform_area(self) -> float:
@@ -340,6 +346,41 @@ class AirframeDragConfig:
         check_range("drag.leakage_protuberance_fraction", self.leakage_protuberance_fraction, 0.0, 0.5)
         check_range("drag.cooling_delta_T_K", self.cooling_delta_T_K, 5.0, 200.0, "K")
         check_range("drag.cooling_momentum_loss", self.cooling_momentum_loss, 0.0, 1.0)
+
+
+@dataclass
+class DesignBounds:
+    """Bounds of the design variables, as factors of the baseline (or absolute where noted).
+
+    These are ranges of validity of the models, not results: no bound is taken from a
+    published optimum.  Span is held by what it costs (the default ``WingStructure``: the
+    bending material grows with AR^1.5 and the wing's own lift share, and beyond the
+    limit-load tip deflection the stiffness material with AR^2; Raymer's Eq. 15.46 alone,
+    ``wing_structure=None``, grows with AR^0.6) and by ``Aircraft(max_span_m=...)`` when the
+    user has a hangar or gate limit; the box 0.6-3.0 x the baseline span is far outside
+    every committed optimum.  Taper by the
+    stall pattern of a wing with ailerons (``mdo.vehicle.stall_pattern``: the aileron span
+    still attached at the stall onset, which low taper without washout loses) and the stall
+    margin of the tip strips (cl_max falls with the tip chord's Reynolds number) - the box
+    0.2-1.0 keeps the planform a trapezoid with a tip chord the lattice and the section data
+    can carry; a wing without an aileron span (the TTW's, as defined) can sit on it.
+    Design speeds 0.05-2.0 x the baseline: the Adkins-Liebeck design is valid down to
+    V = 0 (hover), so the box only keeps its scale (``problems/ttw.py``: to the cruise speed); the design cl of
+    the blade sections by the design point's stall limit at each station's Reynolds
+    number (``design_cl_stall_rows``, the vehicle's stall margin) - the box 0.2-1.5
+    is the range of the Adkins-Liebeck design.
+    """
+    design_thrust: tuple = (0.3, 3.0)
+    design_speed: tuple = (0.05, 2.0)
+    tip_radius: tuple = (0.5, 1.6)
+    design_cl: tuple = (0.2, 1.5)          # absolute; held by stall at the design stations' Re
+    span: tuple = (0.6, 3.0)
+    taper: tuple = (0.2, 1.0)              # absolute
+    twist_deg: tuple = (-8.0, 8.0)         # absolute
+    span_eta: tuple = (0.0, 1.0)           # absolute (fraction of the semispan)
+    tip_clearance_m: float = 0.05          # between neighbouring disks, and disk to symmetry plane
+    # each wing's innermost disk to the fuselage's side (14 CFR 23.925(d)(1), 1 in); None: unchecked
+    fuselage_clearance_m: float | None = PROPELLER_STRUCTURE_CLEARANCE_M
 
 
 @dataclass(frozen=True)
