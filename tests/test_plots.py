@@ -312,3 +312,18 @@ def test_mdo_plot_redraws_geometry_and_planform(tmp_path):
     for f in ("geometry.png", "planform.png", "report.html", "convergence.csv", "mission.png", "loading.png",
               "rotor.png"):
         assert (run / f).exists() and (run / f).stat().st_size > (500 if f.endswith(".csv") else 5_000), f
+
+
+def test_design_checks_flag_a_cabin_pitched_beyond_a_passenger_airplanes_envelope():
+    """The body's attitude over the mission against 15 deg nose-down / 30 deg nose-up (Airbus
+    normal-law pitch-attitude protection): the TTW on Table 5's tilt schedule pitched its cabin to
+    67 deg in the descent transition and is flagged; with its tilt a control (the default) it is
+    not; GA-2P's climbs stay far inside."""
+    from mdo.plots.checks import design_checks
+    up, down = "most nose-up body attitude", "most nose-down body attitude"
+    sched = {c["quantity"]: c for c in design_checks(ROOT / "results" / "ttw" / "tilt_schedule")}
+    assert not sched[up]["ok"] and sched[up]["value"] == pytest.approx(67.2, abs=0.1) and sched[up]["high"] == 30
+    ttw = {c["quantity"]: c for c in design_checks(ROOT / "results" / "ttw")}
+    assert ttw[up]["ok"] and ttw[down]["ok"] and ttw[down]["low"] == -15
+    ga = {c["quantity"]: c for c in design_checks(ROOT / "results" / "ga2p")}
+    assert ga[up]["ok"] and ga[up]["value"] < 15 and ga[down]["ok"]

@@ -7,6 +7,8 @@ the fuselage's drag sees ``a`` alone, so a free tilt lets the cabin fly level wh
 wing sits at its own best angle, and the schedule (delta = 0) cannot.
 """
 import math
+from pathlib import Path
+
 
 import casadi as ca
 import numpy as np
@@ -140,3 +142,52 @@ def test_the_tilt_wing_flies_its_transitions_tilt_as_a_control():
     assert set(at_nodes) <= set(int(c) for c in v.tilt_control_nodes(m.cond.parameters, m.K).nonzero()[0])
     with pytest.raises(InputError, match="tilt"):
         Aircraft(cfg, tilt="sometimes")
+
+
+def _ttw_problem_file():
+    import importlib.util
+    root = Path(__file__).resolve().parents[1]
+    spec = importlib.util.spec_from_file_location("ttw_problem_file", root / "problems" / "ttw.py")
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod, root
+
+
+def test_the_ttw_keeps_its_cabin_in_a_passenger_airplanes_attitude_envelope_by_default():
+    """problems/ttw.py: with the transitions' tilt a control (default) the body's attitude is bounded
+    to the cabin envelope (15 deg nose-down, 30 deg nose-up) at every node; on Table 5's schedule the
+    eVTOL profile's own box; a stated limit is symmetric."""
+    from mdo.mission.profiles import CABIN_ATTITUDE_ENVELOPE_RAD
+    mod, _ = _ttw_problem_file()
+    assert mod.cabin_attitude_bounds_rad("control", None) == CABIN_ATTITUDE_ENVELOPE_RAD
+    np.testing.assert_allclose(np.degrees(CABIN_ATTITUDE_ENVELOPE_RAD), (-15.0, 30.0))
+    assert mod.cabin_attitude_bounds_rad("schedule", None) is None
+    np.testing.assert_allclose(mod.cabin_attitude_bounds_rad("schedule", 20.0), np.radians((-20.0, 20.0)))
+    assert mod.OPTIONS["tilt"][1] == "control" and mod.RELAXED_OPTIONS["tilt"] == "schedule"
+
+
+def test_a_schedule_flown_start_hands_its_excess_attitude_to_the_wing_tilt():
+    """The relaxed start flies Table 5's tilt schedule; ``attitude_into_tilt`` clips the body angle to
+    the cabin envelope and adds what it cut off to the schedule's wing-mounted angle, so the wing and
+    the rotors keep their angle to the flight path (body + tilt unchanged at every transition node)."""
+    import json
+    from mdo.mission.profiles import CABIN_ATTITUDE_ENVELOPE_RAD, evtol_segments
+    mod, root = _ttw_problem_file()
+    sol = json.loads((root / "results" / "ttw" / "tilt_schedule" / "analysis" / "solution.json").read_text())
+    body0 = next(v for v in sol["variables"] if v["name"] == "body_angle")
+    theta0, labels = np.asarray(body0["value"], float).ravel(), list(body0["labels"])
+    assert theta0.max() > math.radians(60)            # the schedule pitched the cabin to 64 deg
+    out = mod.attitude_into_tilt(sol, CABIN_ATTITUDE_ENVELOPE_RAD)
+    var = {v["name"]: v for v in out["variables"]}
+    theta = np.asarray(var["body_angle"]["value"], float).ravel()
+    lo, hi = CABIN_ATTITUDE_ENVELOPE_RAD
+    assert lo <= theta.min() and theta.max() <= hi
+    wma = {s.name: s.parameters["wing_mounted_angle_rad"] for s in evtol_segments()
+           if s.parameters.get("wing_tilt_control")}
+    tilt = np.asarray(var["wing_tilt"]["value"], float).ravel()
+    assert var["wing_tilt"]["labels"] == [lab for lab in labels if lab.split()[0] in wma]
+    for k, lab in enumerate(var["wing_tilt"]["labels"]):
+        i = labels.index(lab)
+        assert theta[i] + tilt[k] == pytest.approx(theta0[i] + wma[lab.split()[0]], abs=1e-12)
+    keep = [i for i, lab in enumerate(labels) if lo <= theta0[i] <= hi]
+    np.testing.assert_array_equal(theta[keep], theta0[keep])

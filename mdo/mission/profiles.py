@@ -77,7 +77,14 @@ from .segments import (
 )
 from .transcription import DEFAULT_NODES, Mission
 
-__all__ = ["TABLE5_GA", "TABLE5_EVTOL", "ga_segments", "ga_mission", "evtol_segments", "evtol_mission"]
+# A passenger cabin's pitch-attitude envelope (rad), nose-down to nose-up: the pitch-attitude
+# protection of a fly-by-wire passenger airplane, 15 deg nose-down to 30 deg nose-up (Airbus normal
+# law, FCOM DSC-27-20-10-20; 25 deg nose-up at low speed).  The eVTOL profile's body-angle box
+# (-60/+85 deg) is wider: a tilt-wing on a prescribed tilt schedule points its thrust by pitching
+# the cabin.  Read by the TTW problem (its default bounds) and the design checks.
+CABIN_ATTITUDE_ENVELOPE_RAD = (-15.0 * DEG, 30.0 * DEG)
+
+__all__ = ["CABIN_ATTITUDE_ENVELOPE_RAD", "TABLE5_GA", "TABLE5_EVTOL", "ga_segments", "ga_mission", "evtol_segments", "evtol_mission"]
 
 # Table 5 as printed: (symbol, h0 ft, hf ft, V0 mph, Vf mph, rate ft/min, WMA deg, beta_c deg)
 TABLE5_GA = [

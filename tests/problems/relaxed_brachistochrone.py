@@ -10,7 +10,7 @@ RELAXED_OPTIONS = {"final_y": 6.0}
 OPTIONS = {"final_y": (float, 0.0, 9.0), "nodes": (int, 4, 60)}
 
 
-def relaxed_start(run_dir, solution):
+def relaxed_start(run_dir, solution, options):
     (Path(run_dir) / "relaxed_start_called.txt").write_text(solution["problem"])
     return solution
 
