@@ -248,7 +248,8 @@ def _relaxed_start(args, options, analysis_problem, folder, progress):
     """A problem file's ``RELAXED_OPTIONS`` (e.g. ``{"limits": False}``): first solve the
     analysis with those options into ``relaxed/`` beside the analysis, then start the
     analysis from it (through the file's ``relaxed_start(run_dir, solution, options)`` if it
-    has one; ``options`` are the run's own, without the relaxed ones) - a continuation for a baseline that does not converge from the initial guess.
+    has one; ``options`` are the run's own, without the relaxed ones) - a continuation for a
+    baseline that does not converge from the initial guess.
     Returns an exit code if that solve failed, else None (``args._relaxed`` holds the start)."""
     from .nlp.run import load_problem_file, load_warm_start, problem_module
 

@@ -94,7 +94,7 @@ from dataclasses import replace
 import numpy as np
 
 from mdo.core.units import DEG, FT, MPH, NMI
-from mdo.mission.profiles import CABIN_ATTITUDE_ENVELOPE_RAD, evtol_mission, evtol_segments
+from mdo.mission.profiles import CABIN_ATTITUDE_ENVELOPE_RAD, evtol_mission
 from mdo.nlp import Problem
 from mdo.studies import (AIRCRAFT_OPTIONS, AIRFRAME_OPTIONS, TRAJECTORY_OPTIONS, airframe_variant,
                          minimize_battery_energy, trajectory_envelope)
@@ -147,29 +147,29 @@ def relaxed_start(run_dir, solution: dict, options: dict) -> dict:
     tilt = options.get("tilt", "control")
     bounds_rad = cabin_attitude_bounds_rad(tilt, options.get("cabin_attitude_deg"))
     if tilt == "control" and bounds_rad is not None:
-        attitude_into_tilt(solution, bounds_rad)
+        attitude_into_tilt(run_dir, solution, bounds_rad)
     return solution
 
 
-def attitude_into_tilt(solution: dict, bounds_rad: tuple) -> dict:
-    """A solution flown on Table 5's tilt schedule as the start of one whose tilt is a control:
-    the body angle clipped to ``bounds_rad`` and what was cut off added to the schedule's
-    wing-mounted angle (``wing_tilt`` of the transitions), so that the wing and rotors keep their
-    angle to the flight path and the start stays nearly feasible.  Measured 2026-12-07 from the
-    committed schedule baseline (body up to 64 deg): so converted, the baseline with the tilt a
-    control and the cabin envelope converged in 63 iterations; with the body angle merely pushed
-    inside its bounds it wandered for 168 (stopped)."""
-    var = {v["name"]: v for v in solution["variables"]}
-    body = var["body_angle"]
+def attitude_into_tilt(run_dir, solution: dict, bounds_rad: tuple) -> dict:
+    """The solution of the run folder ``run_dir``, flown on a prescribed tilt, as the start of one whose
+    tilt is a control: the body angle clipped to ``bounds_rad`` and what was cut off added to the
+    wing-mounted angle the run flew (``mission.csv``), as ``wing_tilt`` at the nodes whose tilt is a
+    control, so that the wing and rotors keep their angle to the flight path and the start stays
+    nearly feasible.  Measured 2026-12-07 from the committed schedule baseline (body up to 64 deg):
+    so converted, the baseline with the tilt a control and the cabin envelope converged in 63
+    iterations; with the body angle merely pushed inside its bounds it wandered for 168 (stopped)."""
+    from mdo.runfolder import read_run
+
+    flown = read_run(run_dir).mission
+    body = next(v for v in solution["variables"] if v["name"] == "body_angle")
     theta = np.asarray(body["value"], float).ravel()
     clipped = np.clip(theta, *bounds_rad)
-    wma = {s.name: s.parameters["wing_mounted_angle_rad"] for s in evtol_segments()
-           if s.parameters.get("wing_tilt_control")}
-    nodes = [(i, lab) for i, lab in enumerate(body["labels"]) if lab.split()[0] in wma]
-    tilt = [float(wma[lab.split()[0]] + theta[i] - clipped[i]) for i, lab in nodes]
+    on = flown["wing_tilt_control"] > 0
+    tilt = np.radians(flown["wing_mounted_angle_deg"]) + theta - clipped
     body["value"] = [clipped.tolist()]
     solution["variables"] = [v for v in solution["variables"] if v["name"] != "wing_tilt"] + \
-        [{"name": "wing_tilt", "value": [tilt], "labels": [lab for _, lab in nodes]}]
+        [{"name": "wing_tilt", "value": [tilt[on].tolist()]}]
     return solution
 
 

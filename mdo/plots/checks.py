@@ -50,7 +50,8 @@ from ..vehicle.config import PROPELLER_STRUCTURE_CLEARANCE_M, fuselage_gaps_m, f
 __all__ = ["CHECKS", "design_checks", "write_design_checks", "checks_markdown"]
 
 CABIN_ATTITUDE_DEG = tuple(round(math.degrees(a), 9) for a in CABIN_ATTITUDE_ENVELOPE_RAD)
-_ATTITUDE_BASIS = "Airbus normal-law pitch-attitude protection: -15 to +30 deg (FCOM DSC-27-20-10-20)"
+_ATTITUDE_BASIS = (f"Airbus normal-law pitch-attitude protection: {CABIN_ATTITUDE_DEG[0]:+g} to "
+                   f"{CABIN_ATTITUDE_DEG[1]:+g} deg (FCOM DSC-27-20-10-20)")
 
 # quantity: (low, high, unit, basis) — see the module docstring for the sources
 CHECKS = {

@@ -27,8 +27,9 @@ args = ap.parse_args()
 spec = importlib.util.spec_from_file_location("ttw_problem_file", ROOT / "problems" / "ttw.py")
 ttw = importlib.util.module_from_spec(spec)
 spec.loader.exec_module(ttw)
-start = json.loads((ROOT / "results" / "ttw" / "tilt_schedule" / "analysis" / "solution.json").read_text())
-ttw.attitude_into_tilt(start, ttw.cabin_attitude_bounds_rad("control", None))
+schedule = ROOT / "results" / "ttw" / "tilt_schedule" / "analysis"
+start = json.loads((schedule / "solution.json").read_text())
+ttw.attitude_into_tilt(schedule, start, ttw.cabin_attitude_bounds_rad("control", None))
 with tempfile.TemporaryDirectory() as tmp:
     ws = Path(tmp) / "solution.json"
     ws.write_text(json.dumps(start))
