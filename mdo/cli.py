@@ -248,30 +248,43 @@ def _relaxed_start(args, options, analysis_problem, folder, progress):
     """A problem file's ``RELAXED_OPTIONS`` (e.g. ``{"limits": False}``): first solve the
     analysis with those options into ``relaxed/`` beside the analysis, then start the
     analysis from it (through the file's ``relaxed_start(run_dir, solution, options)`` if it
-    has one; ``options`` are the run's own, without the relaxed ones) - a continuation for a
-    baseline that does not converge from the initial guess.
-    Returns an exit code if that solve failed, else None (``args._relaxed`` holds the start)."""
+    has one; ``options`` are those of the solve it starts: the run's own, without the relaxed
+    ones) - a continuation for a baseline that does not converge from the initial guess.
+    A list of such dicts is a continuation in steps: each solved in turn (``relaxed/``,
+    ``relaxed_2/``, ...), each started from the one before through the same hook (its
+    ``options`` then the run's own with the next step's).
+    Returns an exit code if a solve failed, else None (``args._relaxed`` holds the start)."""
     from .nlp.run import load_problem_file, load_warm_start, problem_module
 
     module = problem_module(args.problem)
-    relaxed_opts = getattr(module, "RELAXED_OPTIONS", None)
+    steps = getattr(module, "RELAXED_OPTIONS", None)
     args._relaxed = None
-    if not relaxed_opts:
+    if not steps:
         return None
-    progress(f"building {args.problem} (relaxed start: {relaxed_opts})")
-    relaxed = load_problem_file(args.problem, analysis=True, options={**options, **relaxed_opts})
-    where = folder.stage / ("relaxed" if args.analysis else "analysis/relaxed")
-    what = f"relaxed start of the baseline ({', '.join(f'{k}={v}' for k, v in relaxed_opts.items())})"
-    code, sol = _solve_stage(relaxed, where, args, what, progress)
-    del relaxed
-    if code != 0:
-        out = folder.commit(False, sol.status)
-        _final_report(sol, out, folder, code, what)
-        return code
-    start = sol.to_dict()
+    steps = [steps] if isinstance(steps, dict) else list(steps)
+    if not all(isinstance(s, dict) and s for s in steps):
+        raise InputError("RELAXED_OPTIONS", f"{args.problem}: a dict of build() options or a list of such "
+                                            f"dicts, none empty; got {steps!r}")
     hook = getattr(module, "relaxed_start", None)
-    if callable(hook):
-        start = hook(where, start, dict(options))
+    start = None
+    for i, opts in enumerate(steps):
+        progress(f"building {args.problem} (relaxed start{f' {i + 1} of {len(steps)}' if len(steps) > 1 else ''}: "
+                 f"{opts})")
+        relaxed = load_problem_file(args.problem, analysis=True, options={**options, **opts})
+        if start is not None:
+            load_warm_start(relaxed, start, partial=True)
+        name = "relaxed" if i == 0 else f"relaxed_{i + 1}"
+        where = folder.stage / (name if args.analysis else f"analysis/{name}")
+        what = f"relaxed start of the baseline ({', '.join(f'{k}={v}' for k, v in opts.items())})"
+        code, sol = _solve_stage(relaxed, where, args, what, progress)
+        del relaxed
+        if code != 0:
+            out = folder.commit(False, sol.status)
+            _final_report(sol, out, folder, code, what)
+            return code
+        start = sol.to_dict()
+        if callable(hook):
+            start = hook(where, start, {**options, **steps[i + 1]} if i + 1 < len(steps) else dict(options))
     args._relaxed = start
     if analysis_problem is not None:
         load_warm_start(analysis_problem, start, partial=True)

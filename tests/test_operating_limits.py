@@ -142,3 +142,28 @@ def test_limits_violated_when_off_respected_when_on():
     assert P_max > 2 * P_r                    # violated by far when off
     P_r, P_max, i_cell = results[True]
     assert P_max <= P_r * (1 + 1e-6) and np.all(i_cell >= -1e-9) and np.all(i_cell <= 10.0 + 1e-6)
+
+
+def test_motor_ratings_from_a_flown_mission_are_the_least_its_limits_allow():
+    """``motor_ratings_from_mission`` (the relaxed start's re-sizing): with no margins, the ratings
+    meet the power and torque limits at every node of a flown mission, each over the node's
+    short-time factor (1.2 in the TTW's hover and transitions), and one of them with equality: the
+    least rating that fits, not the factor's 20 % more.  On the committed TTW baseline's mission."""
+    from pathlib import Path
+    from mdo.runfolder import read_run
+    from mdo.vehicle.catalog import ttw
+    from mdo.vehicle.rotor_group import motor_ratings_from_mission, short_time_factors
+    cfg = ttw()
+    g = cfg.rotor_groups[0]
+    mission = read_run(Path(__file__).resolve().parents[1] / "results" / "ttw" / "analysis").mission
+    r = motor_ratings_from_mission(cfg, mission, speed_margin=1.0, power_margin=1.0)
+    P_r, w_r = r[f"{g.name}.motor_rated_power"], r[f"{g.name}.motor_rated_speed"]
+    f = short_time_factors(g, mission["segment"])
+    assert f.max() == pytest.approx(1.2) and f.min() == 1.0
+    omega = np.asarray(mission[f"{g.name}.rotor_speed_rpm"], float) * u.RPM
+    power = np.asarray(mission[f"{g.name}.shaft_power_W"], float) / g.count
+    torque = power / omega
+    assert omega.max() == pytest.approx(w_r, rel=1e-12)
+    slack = np.concatenate([f * P_r - power, f * P_r / w_r * omega - torque * omega])
+    assert slack.min() == pytest.approx(0.0, abs=1e-9 * P_r)
+    assert (power / f).max() < power.max()         # the sizing node is a short-time one

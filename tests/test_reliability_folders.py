@@ -223,3 +223,21 @@ def test_relaxed_start_solves_first_and_hands_on(tmp_path):
     r = _mdo("run", prob, "--analysis", "--out", ana, "--quiet")
     assert r.returncode == 0, r.stderr
     assert (ana / "relaxed" / "summary.json").exists() and (ana / "summary.json").exists()
+
+
+def test_relaxed_start_in_steps_hands_each_on_with_the_next_solves_options(tmp_path):
+    """RELAXED_OPTIONS as a list: each step is solved in turn (relaxed/, relaxed_2/), the hook sees
+    after each the options of the solve it starts (the next step's, then the run's own) and, in the
+    step's summary.json, the build() options the step was flown with (defaults included)."""
+    prob = HERE / "problems" / "relaxed_steps_brachistochrone.py"
+    out = tmp_path / "run"
+    r = _mdo("run", prob, "--out", out, "--quiet", "-o", "nodes=12")
+    assert r.returncode == 0, r.stderr
+    first = json.loads((out / "analysis" / "relaxed" / "relaxed_start_called.json").read_text())
+    second = json.loads((out / "analysis" / "relaxed_2" / "relaxed_start_called.json").read_text())
+    assert first["flown"] == {"nodes": 12, "analysis": True, "final_y": 6.0}
+    assert first["next"] == {"nodes": 12, "final_y": 5.5}
+    assert second["flown"]["final_y"] == 5.5 and second["next"] == {"nodes": 12}
+    assert json.loads((out / "analysis" / "summary.json").read_text())["options"]["final_y"] == 5.0
+    assert json.loads((out / "summary.json").read_text())["options"] == {"nodes": 12, "analysis": False,
+                                                                         "final_y": 5.0}

@@ -162,7 +162,9 @@ def test_the_ttw_keeps_its_cabin_in_a_passenger_airplanes_attitude_envelope_by_d
     np.testing.assert_allclose(np.degrees(CABIN_ATTITUDE_ENVELOPE_RAD), (-15.0, 30.0))
     assert mod.cabin_attitude_bounds_rad("schedule", None) is None
     np.testing.assert_allclose(mod.cabin_attitude_bounds_rad("schedule", 20.0), np.radians((-20.0, 20.0)))
-    assert mod.OPTIONS["tilt"][1] == "control" and mod.RELAXED_OPTIONS["tilt"] == "schedule"
+    assert mod.OPTIONS["tilt"][1] == "control"
+    assert [step["tilt"] for step in mod.RELAXED_OPTIONS] == ["schedule", "schedule"]
+    assert mod.RELAXED_OPTIONS[0]["limits"] is False and "limits" not in mod.RELAXED_OPTIONS[1]
 
 
 def test_a_schedule_flown_start_hands_its_excess_attitude_to_the_wing_tilt():

@@ -7,8 +7,9 @@ the run folder (``results/<problem-file-stem>/`` by default, ``.../analysis/`` f
 
 ``ipopt.log``        the whole IPOPT log
 ``solution.json``    every variable: name, unit, value (and every output)
-``summary.json``     status, objective with unit, iterations, wall time, NLP size,
-                     the problem's summary outputs (e.g. battery_energy_kWh)
+``summary.json``     status, objective with unit, iterations, wall time, NLP size, the
+                     build() options it was made with (defaults included), the problem's
+                     summary outputs (e.g. battery_energy_kWh)
 ``summary.md``       the same for people, with the worst constraint violations
 ``convergence.csv``  the iteration lines of ipopt.log (objective, inf_pr, inf_du, lg_mu ...)
 ``report.html``      one self-contained page: status, objective, constraints, design, figures
@@ -116,6 +117,10 @@ def load_problem_file(path, *, analysis: bool = False, options: dict | None = No
         got = "nothing (None)" if problem is None else type(problem).__name__
         raise RunError(f"problem file {path}: build() returned {got}, "
                        f"expected an mdo.nlp.Problem")
+    # what built it, defaults included (summary.json "options"): the run can be repeated, and a
+    # relaxed-start hook can read how the stage it hands on from was flown
+    problem.build_options = {**{k: p.default for k, p in params.items() if p.default is not p.empty},
+                             **options}
     if analysis:
         problem.freeze_design()
     return problem

@@ -182,6 +182,9 @@ class Solution:
              "objective": {"name": self.objective_name, "value": self.objective, "unit": self.objective_unit},
              "iterations": self.iterations, "wall_time_s": round(self.wall_time_s, 3),
              "nlp_size": self.nlp_size}
+        options = getattr(self._problem, "build_options", None)
+        if options is not None:
+            d["options"] = options
         d.update(self.summary_values())
         d["active"] = [{k: a[k] for k in ("name", "kind", "where", "multiplier", "unit")} for a in self.active]
         d["worst_violations"] = [v for v in self.violations[:5]]

@@ -317,26 +317,10 @@ class RotorGroupModel:
 
     # ------------------------------------------------------------------ limits
     def short_time_row(self, nodes) -> np.ndarray:
-        """Per node: the power factor the motor may use there (1, or the short-time factor
-        in the segments the motor configuration names, if they are short enough)."""
-        from ..core.errors import InputError
-        m = self.config.motor
-        seg = list(nodes.segment)
-        f = np.ones(len(seg))
+        """Per node: the power factor the motor may use there (``short_time_factors``)."""
         t = nodes.time_s
         t_num = None if isinstance(t, (ca.MX, ca.SX)) else np.asarray(t, float).ravel()
-        for name in m.short_time_segments:
-            idx = [k for k, s in enumerate(seg) if s == name]
-            if not idx:
-                continue
-            if t_num is not None:
-                dur = float(t_num[idx[-1]] - t_num[idx[0]])
-                if dur > m.short_time_duration_s * (1 + 1e-9):
-                    raise InputError(f"{self.name}.motor.short_time_segments",
-                                     f"segment {name} lasts {dur:.0f} s, longer than the short-time rating's "
-                                     f"{m.short_time_duration_s:.0f} s; remove it or raise short_time_duration_s")
-            f[idx] = m.short_time_power_factor
-        return f
+        return short_time_factors(self.config, nodes.segment, t_num)
 
     def limits(self, nodes, omega, torque, motor_out, speed, a_s, *, tip_mach_at_nodes: bool) -> list:
         """The group's per-node limits as ``ResidualGroup`` inequalities (see the module docstring)."""
@@ -364,6 +348,29 @@ class RotorGroupModel:
         return lim
 
 
+def short_time_factors(group, segments, time_s=None) -> np.ndarray:
+    """Per node: the power factor the motor of rotor group ``group`` (a ``RotorGroupConfig``)
+    may use there: 1, or its short-time factor in the segments its motor configuration names
+    (``segments``: each node's segment name).  With ``time_s`` (per node, s), a named segment
+    longer than the short-time rating's duration is an ``InputError``."""
+    from ..core.errors import InputError
+    m = group.motor
+    seg = list(segments)
+    f = np.ones(len(seg))
+    for name in m.short_time_segments:
+        idx = [k for k, s in enumerate(seg) if s == name]
+        if not idx:
+            continue
+        if time_s is not None:
+            dur = float(time_s[idx[-1]] - time_s[idx[0]])
+            if dur > m.short_time_duration_s * (1 + 1e-9):
+                raise InputError(f"{group.name}.motor.short_time_segments",
+                                 f"segment {name} lasts {dur:.0f} s, longer than the short-time rating's "
+                                 f"{m.short_time_duration_s:.0f} s; remove it or raise short_time_duration_s")
+        f[idx] = m.short_time_power_factor
+    return f
+
+
 def motor_ratings_from_mission(config, mission: dict, speed_margin: float = 1.1,
                                power_margin: float = 1.05) -> dict:
     """Ratings of the sized motors that a flown mission fits, as initial values.
@@ -372,10 +379,13 @@ def motor_ratings_from_mission(config, mission: dict, speed_margin: float = 1.1,
     run folder's ``mission.csv``, e.g. ``mdo.runfolder.read_run(dir).mission``).  For
     each group with ``motor.sized``: rated speed ``speed_margin`` x the highest rotor
     speed (so speed and voltage fit with room), rated power ``power_margin`` x the larger
-    of the highest shaft power per motor and the highest torque x that rated speed (so
-    the torque fits).  Returns ``{"<group>.motor_rated_power": W, "<group>.motor_rated_speed":
-    rad/s}``: a start for a solve with the limits on after one without them, where the
-    ratings sit on their lower bounds because nothing held them up.
+    of the highest shaft power per motor and the highest torque x that rated speed, each
+    over the node's short-time factor (``short_time_factors``; so the power and torque limits
+    fit, as in ``RotorGroupModel.limits``).  Returns ``{"<group>.motor_rated_power": W,
+    "<group>.motor_rated_speed": rad/s}``: a start for a solve with the limits on after one
+    without them, where the ratings sit on their lower bounds because nothing held them up.
+    Until 2026-12-07 the short-time factor was left out: the ratings came out up to that factor
+    (1.2 for the TTW's hover and transitions) too high.
     """
     out = {}
     for g in config.rotor_groups:
@@ -383,8 +393,10 @@ def motor_ratings_from_mission(config, mission: dict, speed_margin: float = 1.1,
             continue
         omega = np.asarray(mission[f"{g.name}.rotor_speed_rpm"], float) * u.RPM
         power = np.asarray(mission[f"{g.name}.shaft_power_W"], float) / g.count
+        f = short_time_factors(g, mission["segment"])
         torque = power / np.maximum(omega, 1e-6)
         w_r = speed_margin * float(np.max(omega))
-        out[f"{g.name}.motor_rated_power"] = power_margin * max(float(np.max(torque)) * w_r, float(np.max(power)))
+        out[f"{g.name}.motor_rated_power"] = power_margin * max(float(np.max(torque * w_r / f)),
+                                                                float(np.max(power / f)))
         out[f"{g.name}.motor_rated_speed"] = w_r
     return out
