@@ -161,9 +161,10 @@ def _size_motor_guess(ac, gm, nodes, Q1, omega, active):
     speed limits at the guessed operating points (+5 %), so the limits start satisfied."""
     if not gm.config.motor.sized or not active.any():
         return
+    from .rotor_group import least_motor_rating
     f = gm.short_time_row(nodes)
-    w_r = 1.02 * float(np.max(omega[active]))          # throttle and speed limits met with margin
-    P_r = 1.05 * max(float(np.max((Q1 * omega / f)[active])), float(np.max((Q1 * w_r / f)[active])), 1.0)
+    # throttle and speed limits met with margin
+    P_r, w_r = least_motor_rating(Q1[active], omega[active], f[active], speed_margin=1.02, power_margin=1.05)
     ac.guess_motor_rating(gm, P_r, w_r)
 
 

@@ -371,17 +371,25 @@ def short_time_factors(group, segments, time_s=None) -> np.ndarray:
     return f
 
 
+def least_motor_rating(torque_Nm, omega_radps, factors, *, speed_margin: float, power_margin: float):
+    """The least continuous rating (W, rad/s) that the motor limits of ``RotorGroupModel.limits``
+    allow at the operating points ``torque_Nm``, ``omega_radps`` (per motor, arrays), each with
+    its short-time factor ``factors``: rated speed ``speed_margin`` x the highest speed, rated power
+    ``power_margin`` x the larger of the highest shaft power and the highest torque x the rated
+    speed, each over the point's factor (power <= f P_r, torque <= f P_r / omega_r)."""
+    Q, w, f = (np.asarray(a, float).ravel() for a in (torque_Nm, omega_radps, factors))
+    w_r = speed_margin * float(np.max(w))
+    return power_margin * max(float(np.max(Q * w / f)), float(np.max(Q * w_r / f)), 1.0), w_r
+
+
 def motor_ratings_from_mission(config, mission: dict, speed_margin: float = 1.1,
                                power_margin: float = 1.05) -> dict:
     """Ratings of the sized motors that a flown mission fits, as initial values.
 
     ``config``: the ``VehicleConfig``; ``mission``: column name -> per-node array (the
-    run folder's ``mission.csv``, e.g. ``mdo.runfolder.read_run(dir).mission``).  For
-    each group with ``motor.sized``: rated speed ``speed_margin`` x the highest rotor
-    speed (so speed and voltage fit with room), rated power ``power_margin`` x the larger
-    of the highest shaft power per motor and the highest torque x that rated speed, each
-    over the node's short-time factor (``short_time_factors``; so the power and torque limits
-    fit, as in ``RotorGroupModel.limits``).  Returns ``{"<group>.motor_rated_power": W,
+    run folder's ``mission.csv``, e.g. ``mdo.runfolder.read_run(dir).mission``).  For each
+    group with ``motor.sized``: the ``least_motor_rating`` of its nodes, with the short-time
+    factors of their segments (``short_time_factors``).  Returns ``{"<group>.motor_rated_power": W,
     "<group>.motor_rated_speed": rad/s}``: a start for a solve with the limits on after one
     without them, where the ratings sit on their lower bounds because nothing held them up.
     Until 2026-12-07 the short-time factor was left out: the ratings came out up to that factor
@@ -393,10 +401,8 @@ def motor_ratings_from_mission(config, mission: dict, speed_margin: float = 1.1,
             continue
         omega = np.asarray(mission[f"{g.name}.rotor_speed_rpm"], float) * u.RPM
         power = np.asarray(mission[f"{g.name}.shaft_power_W"], float) / g.count
-        f = short_time_factors(g, mission["segment"])
-        torque = power / np.maximum(omega, 1e-6)
-        w_r = speed_margin * float(np.max(omega))
-        out[f"{g.name}.motor_rated_power"] = power_margin * max(float(np.max(torque * w_r / f)),
-                                                                float(np.max(power / f)))
+        P_r, w_r = least_motor_rating(power / np.maximum(omega, 1e-6), omega, short_time_factors(g, mission["segment"]),
+                                      speed_margin=speed_margin, power_margin=power_margin)
+        out[f"{g.name}.motor_rated_power"] = P_r
         out[f"{g.name}.motor_rated_speed"] = w_r
     return out
