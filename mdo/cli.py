@@ -248,13 +248,14 @@ def _relaxed_start(args, options, analysis_problem, folder, progress):
     """A problem file's ``RELAXED_OPTIONS`` (e.g. ``{"limits": False}``): first solve the
     analysis with those options into ``relaxed/`` beside the analysis, then start the
     analysis from it (through the file's ``relaxed_start(run_dir, solution, options)`` if it
-    has one; ``options`` are those of the solve it starts: the run's own, without the relaxed
-    ones) - a continuation for a baseline that does not converge from the initial guess.
+    has one; ``options`` are every ``build()`` option of the solve it starts, defaults included:
+    the run's own, without the relaxed ones) - a continuation for a baseline that does not
+    converge from the initial guess.
     A list of such dicts is a continuation in steps: each solved in turn (``relaxed/``,
     ``relaxed_2/``, ...), each started from the one before through the same hook (its
     ``options`` then the run's own with the next step's).
     Returns an exit code if a solve failed, else None (``args._relaxed`` holds the start)."""
-    from .nlp.run import load_problem_file, load_warm_start, problem_module
+    from .nlp.run import build_options, load_problem_file, load_warm_start, problem_module
 
     module = problem_module(args.problem)
     steps = getattr(module, "RELAXED_OPTIONS", None)
@@ -284,7 +285,8 @@ def _relaxed_start(args, options, analysis_problem, folder, progress):
             return code
         start = sol.to_dict()
         if callable(hook):
-            start = hook(where, start, {**options, **steps[i + 1]} if i + 1 < len(steps) else dict(options))
+            following = {**options, **steps[i + 1]} if i + 1 < len(steps) else options
+            start = hook(where, start, build_options(module, following, analysis=True))
     args._relaxed = start
     if analysis_problem is not None:
         load_warm_start(analysis_problem, start, partial=True)

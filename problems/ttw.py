@@ -144,7 +144,7 @@ RELAXED_OPTIONS = [{"limits": False, "pitch": "schedule", "coupling": "freestrea
 
 def relaxed_start(run_dir, solution: dict, options: dict) -> dict:
     """A relaxed step's solution (run folder ``run_dir``) as the start of the next solve, whose
-    options are ``options``: after the step flown without limits the motors re-sized to its
+    ``build()`` options are ``options`` (all of them): after the step flown without limits the motors re-sized to its
     mission (``motor_ratings_from_mission``; its ratings fell to their lower bounds); with the next
     solve's tilt a control, the attitude beyond the cabin's envelope moved into the wing tilt
     (``attitude_into_tilt``: the relaxed steps fly Table 5's tilt schedule)."""
@@ -152,13 +152,13 @@ def relaxed_start(run_dir, solution: dict, options: dict) -> dict:
     from mdo.vehicle.rotor_group import motor_ratings_from_mission
 
     flown = read_run(run_dir)
-    if not flown.summary.get("options", {}).get("limits", True):
+    if not flown.summary["options"]["limits"]:
         ratings = motor_ratings_from_mission(ttw(), flown.mission)
         for v in solution["variables"]:
             if v["name"] in ratings:
                 v["value"] = ratings[v["name"]]
-    tilt = options.get("tilt", "control")
-    bounds_rad = cabin_attitude_bounds_rad(tilt, options.get("cabin_attitude_deg"))
+    tilt = options["tilt"]
+    bounds_rad = cabin_attitude_bounds_rad(tilt, options["cabin_attitude_deg"])
     if tilt == "control" and bounds_rad is not None:
         attitude_into_tilt(run_dir, solution, bounds_rad)
     return solution

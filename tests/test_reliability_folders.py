@@ -236,8 +236,8 @@ def test_relaxed_start_in_steps_hands_each_on_with_the_next_solves_options(tmp_p
     first = json.loads((out / "analysis" / "relaxed" / "relaxed_start_called.json").read_text())
     second = json.loads((out / "analysis" / "relaxed_2" / "relaxed_start_called.json").read_text())
     assert first["flown"] == {"nodes": 12, "analysis": True, "final_y": 6.0}
-    assert first["next"] == {"nodes": 12, "final_y": 5.5}
-    assert second["flown"]["final_y"] == 5.5 and second["next"] == {"nodes": 12}
+    assert first["next"] == {"nodes": 12, "analysis": True, "final_y": 5.5}
+    assert second["flown"]["final_y"] == 5.5 and second["next"] == {"nodes": 12, "analysis": True, "final_y": 5.0}
     assert json.loads((out / "analysis" / "summary.json").read_text())["options"]["final_y"] == 5.0
     assert json.loads((out / "summary.json").read_text())["options"] == {"nodes": 12, "analysis": False,
                                                                          "final_y": 5.0}

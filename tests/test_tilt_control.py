@@ -194,3 +194,26 @@ def test_a_schedule_flown_start_hands_its_excess_attitude_to_the_wing_tilt():
         assert theta[i] + tilt[k] == pytest.approx(theta0[i] + wma[lab.split()[0]], abs=1e-12)
     keep = [i for i, lab in enumerate(labels) if lo <= theta0[i] <= hi]
     np.testing.assert_array_equal(theta[keep], theta0[keep])
+
+
+@pytest.mark.parametrize("limits", [False, True])
+def test_the_ttw_hook_resizes_the_motors_only_after_a_step_flown_without_limits(tmp_path, limits):
+    """``relaxed_start`` reads how the step it hands on from was flown (its summary.json options):
+    after the limit-free step the motors are re-sized to that mission; after the step with every
+    limit on (the tilt schedule's baseline) the converged ratings are kept; with the next solve's
+    tilt a control the attitude goes into the tilt either way."""
+    import json
+    import shutil
+    from mdo.nlp.run import build_options
+    mod, root = _ttw_problem_file()
+    run = tmp_path / "step"
+    shutil.copytree(root / "results" / "ttw" / "tilt_schedule" / "analysis", run)
+    summary = json.loads((run / "summary.json").read_text())
+    summary["options"] = build_options(mod, {"limits": limits, "tilt": "schedule"}, analysis=True)
+    (run / "summary.json").write_text(json.dumps(summary))
+    sol = json.loads((run / "solution.json").read_text())
+    before = {v["name"]: np.ravel(v["value"]).tolist() for v in sol["variables"]}
+    out = mod.relaxed_start(run, sol, build_options(mod, {}, analysis=True))
+    after = {v["name"]: np.ravel(v["value"]).tolist() for v in out["variables"]}
+    assert (after["rotors.motor_rated_power"] == before["rotors.motor_rated_power"]) == limits
+    assert "wing_tilt" in after and max(after["body_angle"]) <= math.radians(30) + 1e-12

@@ -82,6 +82,30 @@ def problem_module(path):
     return _import_file(Path(path))
 
 
+def _with_analysis(build, options, analysis: bool) -> dict:
+    """``options`` with ``analysis`` added where ``build()`` takes it."""
+    options = dict(options or {})
+    params = inspect.signature(build).parameters
+    if "analysis" in params or any(p.kind == p.VAR_KEYWORD for p in params.values()):
+        options["analysis"] = analysis
+    return options
+
+
+def _with_defaults(build, options: dict) -> dict:
+    """``build()``'s defaults, overridden by ``options``."""
+    params = inspect.signature(build).parameters
+    return {**{k: p.default for k, p in params.items() if p.default is not p.empty}, **options}
+
+
+def build_options(module, options: dict | None = None, *, analysis: bool = False) -> dict:
+    """Every option ``build()`` of the imported problem file ``module`` gets with these ``-o``
+    ``options`` (checked) in this mode: what ``load_problem_file`` builds with and records in
+    ``Problem.build_options``, defaults included."""
+    build = module.build
+    return _with_defaults(build, check_options(module, build, _with_analysis(build, options, analysis),
+                                               getattr(module, "__file__", "problem file")))
+
+
 def load_problem_file(path, *, analysis: bool = False, options: dict | None = None) -> Problem:
     """Import ``path``, call its ``build(**options)`` and check it returns a Problem."""
     path = Path(path)
@@ -98,12 +122,7 @@ def load_problem_file(path, *, analysis: bool = False, options: dict | None = No
     build = getattr(module, "build", None)
     if build is None or not callable(build):
         raise RunError(f"problem file {path} has no function build(**options) returning an mdo.nlp.Problem")
-    options = dict(options or {})
-    params = inspect.signature(build).parameters
-    takes_kwargs = any(p.kind == p.VAR_KEYWORD for p in params.values())
-    if "analysis" in params or takes_kwargs:
-        options["analysis"] = analysis
-    options = check_options(module, build, options, path)  # keys, types, ranges (mdo.nlp.options)
+    options = check_options(module, build, _with_analysis(build, options, analysis), path)  # keys, types, ranges
     try:
         problem = build(**options)
     except RunError:
@@ -119,8 +138,7 @@ def load_problem_file(path, *, analysis: bool = False, options: dict | None = No
                        f"expected an mdo.nlp.Problem")
     # what built it, defaults included (summary.json "options"): the run can be repeated, and a
     # relaxed-start hook can read how the stage it hands on from was flown
-    problem.build_options = {**{k: p.default for k, p in params.items() if p.default is not p.empty},
-                             **options}
+    problem.build_options = _with_defaults(build, options)
     if analysis:
         problem.freeze_design()
     return problem
