@@ -42,7 +42,12 @@ The wing-mounted angle of the transitions (VT, CT1, CT2, AT, DT) is a control to
 (``tilt="control"``, default since 2026-12-07), continuous with the hover and wing-borne segments
 around them and at most 10 deg/s (``WingConfig.max_tilt_rate_degps``), and the cabin stays within a
 passenger airplane's attitude envelope, 15 deg nose-down to 30 deg nose-up at every node
-(``cabin_attitude_bounds_rad``).  The body attitude is free in the transitions and the wing and
+(``cabin_attitude_bounds_rad``), and pitches at most 3 deg/s within every segment, an airliner's
+take-off rotation (``cabin_pitch_rate_radps``; since 2026-12-07, twenty-second session: before, the
+descent transition pitched the cabin 27 deg nose-down in its last 4.4 s, 6 deg/s, and the vertical
+transition 35 deg nose-up in 2.9 s, 12 deg/s).  At the segment joins the attitude still steps where
+Table 5's profile steps its acceleration (hover to the vertical transition's 0.2 g: 12 deg).  The
+body attitude is free in the transitions and the wing and
 rotors see body + tilt, so without that limit the tilt only moves the cabin: on Table 5's schedule
 (``-o tilt=schedule``, the paper's reproduction, with the mission's -60/+85 deg) the optimum flew the
 approach and descent transitions 60-67 deg nose-up.  ``cabin_attitude_deg`` bounds the attitude to
@@ -54,7 +59,7 @@ the CG a design variable held by a 5 % static margin; the hover and transition s
 not trimmed (their tilted rotors' hub positions and post-stall moments are not modelled).
 
 Options (``-o KEY=VALUE``): ``nodes`` per segment (6), ``pitch`` (control), ``trim`` (true),
-``cruise_distance_nmi`` (50),
+``max_pitch_rate_degps`` (3 with the tilt a control, none on Table 5's schedule), ``cruise_distance_nmi`` (50),
 ``reserve_cruise_distance_nmi`` (5), ``cruise_altitude_ft``, ``cruise_speed_mph``,
 ``cells_series``/``cells_parallel`` (150/140), ``max_cell_current_A`` (15) and ``max_charge_current_A`` (4, above), ``swirl_recovery``, ``limits``,
 ``tip_mach_limit``, ``allow_regeneration`` (on here, above), ``n_stations`` (16), ``n_azimuth`` (4, transition
@@ -94,7 +99,7 @@ from dataclasses import replace
 import numpy as np
 
 from mdo.core.units import DEG, FT, MPH, NMI
-from mdo.mission.profiles import CABIN_ATTITUDE_ENVELOPE_RAD, evtol_mission
+from mdo.mission.profiles import CABIN_ATTITUDE_ENVELOPE_RAD, CABIN_PITCH_RATE_MAX_RADPS, evtol_mission
 from mdo.nlp import Problem
 from mdo.studies import (AIRCRAFT_OPTIONS, AIRFRAME_OPTIONS, TRAJECTORY_OPTIONS, airframe_variant,
                          minimize_battery_energy, trajectory_envelope)
@@ -112,6 +117,7 @@ OPTIONS = {**AIRCRAFT_OPTIONS, **AIRFRAME_OPTIONS, **TRAJECTORY_OPTIONS,
     "pitch": (str, "control", "schedule"),
     "tilt": (str, "control", "schedule"),
     "cabin_attitude_deg": (float, 2.0, 60.0),
+    "max_pitch_rate_degps": (float, 0.5, 60.0),
     "max_span_m": (float, 5.0, 30.0),
     "ailerons_from_eta": (float, 0.0, 0.95),
     "ailerons": (bool,),
@@ -201,6 +207,20 @@ def cabin_attitude_bounds_rad(tilt: str, cabin_attitude_deg: float | None) -> tu
     return CABIN_ATTITUDE_ENVELOPE_RAD if tilt == "control" else None
 
 
+def cabin_pitch_rate_radps(tilt: str, max_pitch_rate_degps: float | None) -> float | None:
+    """The body's pitch-rate limit within the segments (rad/s; None: no limit).
+
+    ``max_pitch_rate_degps`` given: that.  Otherwise, with the transitions' tilt a control (the
+    default), a passenger cabin's 3 deg/s within every segment
+    (``mdo.mission.profiles.CABIN_PITCH_RATE_MAX_RADPS``).  On Table 5's tilt schedule the cabin must
+    pitch to 60-67 deg and back to point the thrust, so that schedule, the paper's reproduction, keeps
+    the point-mass mission's free attitude.
+    """
+    if max_pitch_rate_degps is not None:
+        return max_pitch_rate_degps * DEG
+    return CABIN_PITCH_RATE_MAX_RADPS if tilt == "control" else None
+
+
 def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 50.0,
           reserve_cruise_distance_nmi: float = 5.0, cruise_altitude_ft: float = 2500.0,
           cruise_speed_mph: float = 175.0, cells_series: int = 150, cells_parallel: int = 140,
@@ -212,7 +232,8 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
           motor_model: str = "pmsm", sections: str = "as_defined", leakage_fraction: float | None = None,
           nacelle_slipstream: bool = True, cooling_drag: bool = True, airframe_calibration: float | None = None,
           wing_mass: str = "bending", max_tip_deflection_pct: float | None = None,
-          tilt: str = "control", cabin_attitude_deg: float | None = None, trim: bool = True, wing_viscous: bool | None = None,
+          tilt: str = "control", cabin_attitude_deg: float | None = None, max_pitch_rate_degps: float | None = None,
+          trim: bool = True, wing_viscous: bool | None = None,
           blown_profile_drag: bool = True, engine_out: str | None = None, fin_sizing: bool = False,
           trajectory: str = "prescribed", max_block_time_min: float | None = None,
           min_climb_gradient_pct: float | None = None, max_span_m: float | None = None,
@@ -246,6 +267,7 @@ def build(analysis: bool = False, nodes: int = 6, cruise_distance_nmi: float = 5
     bounds_rad = cabin_attitude_bounds_rad(tilt, cabin_attitude_deg)
     attitude = {} if bounds_rad is None else {"body_angle_bounds_rad": bounds_rad}
     mission = evtol_mission(vehicle, nodes=nodes, cruise_distance_m=cruise_distance_nmi * NMI, **attitude,
+                            max_body_pitch_rate_radps=cabin_pitch_rate_radps(tilt, max_pitch_rate_degps),
                             reserve_cruise_distance_m=reserve_cruise_distance_nmi * NMI,
                             cruise_altitude_m=cruise_altitude_ft * FT,
                             cruise_speed_mps=cruise_speed_mph * MPH, trajectory=trajectory,

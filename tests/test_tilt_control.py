@@ -217,3 +217,38 @@ def test_the_ttw_hook_resizes_the_motors_only_after_a_step_flown_without_limits(
     after = {v["name"]: np.ravel(v["value"]).tolist() for v in out["variables"]}
     assert (after["rotors.motor_rated_power"] == before["rotors.motor_rated_power"]) == limits
     assert "wing_tilt" in after and max(after["body_angle"]) <= math.radians(30) + 1e-12
+
+
+
+def _decelerate(max_rate):
+    """Level flight at 40 m/s (A), then a deceleration to 25 m/s (B) on the tilt schedule: the
+    body angle is the wing's only angle, so it pitches up through B as the speed falls."""
+    segs = [S.ConstantSpeedConstantAltitude("A", speed_mps=40.0, altitude_m=500.0, distance_m=2000.0),
+            S.ConstantAccelerationConstantAltitude("B", speed_end_mps=25.0, acceleration_mps2=-0.15)]
+    p = Problem("pitch_rate_toy")
+    m = Mission(TiltingToy(False), segs, nodes=8, max_body_pitch_rate_radps=max_rate).build(p)
+    p.minimize(m.energy_used_J / 1e6, unit="MJ")
+    return p, m, p.solve(verbose=False)
+
+
+def test_a_body_pitch_rate_limit_holds_at_every_free_node():
+    p0, m0, sol0 = _decelerate(None)
+    assert sol0.success and "body pitch rate" not in p0.groups
+    rate0 = np.asarray(sol0.value(m0.report_rows()["body_pitch_rate_radps"][0])).ravel()
+    theta0 = np.asarray(sol0.value(m0.theta)).ravel()
+    from mdo.core import Collocation
+    assert np.allclose(rate0[8:], theta0[8:] @ Collocation(8).D.T / 100.0, atol=1e-10)   # B lasts 100 s
+    q_nat = float(np.max(np.abs(rate0)))
+    assert q_nat > math.radians(0.02)                  # the deceleration pitches the body up
+    p, m, sol = _decelerate(2.0 * q_nat)               # a loose limit leaves the optimum alone
+    assert sol.success and len(p.groups["body pitch rate"].labels) == 2 * 16
+    assert sol.objective == pytest.approx(sol0.objective, rel=1e-8)
+    p, m, sol = _decelerate(0.5 * q_nat)               # a tight one: the wing's angle cannot follow
+    assert not sol.success
+    assert "body pitch rate" in sol.violation_report()
+
+
+def test_a_body_pitch_rate_limit_names_its_range():
+    segs = [S.ConstantSpeedConstantAltitude("A", speed_mps=40.0, altitude_m=500.0, distance_m=2000.0)]
+    with pytest.raises(InputError, match="max_body_pitch_rate_radps"):
+        Mission(TiltingToy(True), segs, max_body_pitch_rate_radps=-0.1)

@@ -91,3 +91,22 @@ class NodeControlsMixin:
         """Nodes whose state derivative enters no defect: the first node of each segment
         in the differentiation form (its rows of D start at j = 1); none in the integration form."""
         return [g.node0 for g in self._segs] if self.state_form == "differentiation" else []
+
+    def _limit_body_pitch(self, rate_pieces):
+        """The body's pitch rate limit (``Mission(max_body_pitch_rate_radps=...)``) at every node of
+        the segments whose body angle is free, ``+-(D theta)_j / T - q_max <= 0`` ("body pitch
+        rate"; ``rate_pieces``: per segment the rate, 1 x n).  Within segments only: at a join the
+        prescribed profile's acceleration or flight path angle steps (hover to the transition's
+        0.2 g, a climb to level flight), and the point-mass mission turns the force there by
+        stepping the attitude - a manoeuvre shorter than its nodes resolve; with the attitude and a
+        tilt both held continuous the join node would have one force control for two equations."""
+        q_max = self.max_body_pitch_rate_radps
+        rates, labels = [], []
+        for g, rate in zip(self._segs, rate_pieces):
+            if g.kin.body_angle is None:
+                rates += [rate - q_max, -rate - q_max]
+                labels += [f"{self.labels[g.node0 + j]} {sign}" for sign in ("nose-up", "nose-down")
+                           for j in range(g.n)]
+        if rates:
+            self.problem.constrain(f"{self.prefix}body pitch rate", ca.horzcat(*rates), kind="<=", scale=q_max,
+                                   unit="rad/s", labels=labels)

@@ -84,7 +84,16 @@ from .transcription import DEFAULT_NODES, Mission
 # the cabin.  Read by the TTW problem (its default bounds) and the design checks.
 CABIN_ATTITUDE_ENVELOPE_RAD = (-15.0 * DEG, 30.0 * DEG)
 
-__all__ = ["CABIN_ATTITUDE_ENVELOPE_RAD", "TABLE5_GA", "TABLE5_EVTOL", "ga_segments", "ga_mission", "evtol_segments", "evtol_mission"]
+# A passenger cabin's pitch rate (rad/s): the fastest pitch change a passenger airplane's normal
+# operation puts its cabin through, the take-off rotation, "typically 2-3 degrees per second and in
+# most cases should not exceed 3 degrees per second" (Boeing, Flight Operations Review, "The
+# importance of proper rotation technique", 14 March 1986; Airbus flies the same 3 deg/s by its
+# SOPs, Safety First, "A focus on the takeoff rotation").  A rotation rate is a tail-clearance rule,
+# not a comfort study: the figure is what passengers routinely accept, not a measured threshold.
+# Read by the TTW problem (``Mission(max_body_pitch_rate_radps=...)``) and the design checks.
+CABIN_PITCH_RATE_MAX_RADPS = 3.0 * DEG
+
+__all__ = ["CABIN_ATTITUDE_ENVELOPE_RAD", "CABIN_PITCH_RATE_MAX_RADPS", "TABLE5_GA", "TABLE5_EVTOL", "ga_segments", "ga_mission", "evtol_segments", "evtol_mission"]
 
 # Table 5 as printed: (symbol, h0 ft, hf ft, V0 mph, Vf mph, rate ft/min, WMA deg, beta_c deg)
 TABLE5_GA = [
@@ -286,13 +295,14 @@ def evtol_segments(*, cruise_distance_m: float = 50 * NMI, reserve_cruise_distan
 
 def evtol_mission(vehicle, *, nodes: int = DEFAULT_NODES, state_form: str = "differentiation", prefix: str = "",
                   body_angle_bounds_rad=(-60 * DEG, 85 * DEG), trajectory="prescribed", envelope=None,
-                  **options) -> Mission:
+                  max_body_pitch_rate_radps=None, **options) -> Mission:
     """A :class:`Mission` of ``vehicle`` over the eVTOL profile (options as :func:`evtol_segments`;
-    ``trajectory`` and ``envelope`` as :class:`Mission`)."""
+    ``trajectory``, ``envelope`` and ``max_body_pitch_rate_radps`` as :class:`Mission`)."""
     segs = evtol_segments(**options)
     return Mission(vehicle, segs, nodes=nodes, state_form=state_form, prefix=prefix,
                    body_angle_bounds_rad=body_angle_bounds_rad, name="eVTOL profile (Table 5)",
-                   trajectory=trajectory, envelope=envelope, legs=_trip_and_reserve(segs, "RCL"))
+                   trajectory=trajectory, envelope=envelope, legs=_trip_and_reserve(segs, "RCL"),
+                   max_body_pitch_rate_radps=max_body_pitch_rate_radps)
 
 
 def _trip_and_reserve(segs, reserve_start):

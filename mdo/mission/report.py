@@ -33,6 +33,9 @@ def mission_table(mission, solution) -> tuple[list[str], np.ndarray, list[str]]:
         if rows[k][1] == "rad":
             vals[i] = np.degrees(vals[i])
             names.append(k[:-4] + "_deg" if k.endswith("_rad") else k + "_deg")
+        elif rows[k][1] == "rad/s":
+            vals[i] = np.degrees(vals[i])
+            names.append(k[:-6] + "_degps" if k.endswith("_radps") else k + "_degps")
         else:
             names.append(k)
     return names, vals.T, list(mission.segment_of_node)

@@ -110,12 +110,15 @@ class Mission(NodeControlsMixin):
     envelope : the :class:`~mdo.mission.trajectory.Envelope` freed segments respect
     legs : lists of consecutive segment names whose ground distance a free trajectory
         keeps, each on its own (default: the whole mission, one leg)
+    max_body_pitch_rate_radps : the body's pitch rate limit (rad/s) at every node of the
+        segments whose body angle is free (``NodeControlsMixin._limit_body_pitch``); None
+        (default): no limit
     """
 
     def __init__(self, vehicle, segments, *, nodes: int = DEFAULT_NODES, state_form: str = "differentiation",
                  prefix: str = "", body_angle_bounds_rad=(-45.0 * math.pi / 180, 60.0 * math.pi / 180),
                  name: str = "mission", trajectory="prescribed", envelope: Envelope | None = None,
-                 legs=None):
+                 legs=None, max_body_pitch_rate_radps: float | None = None):
         if not segments:
             raise InputError("segments", "a mission needs at least one segment")
         if state_form not in ("differentiation", "integration"):
@@ -148,6 +151,11 @@ class Mission(NodeControlsMixin):
         self.modes = trajectory_modes(self._segs, trajectory)
         self.legs = self._check_legs(legs)
         self.envelope = envelope if envelope is not None else Envelope()
+        if max_body_pitch_rate_radps is not None and not 0.0 < float(max_body_pitch_rate_radps) <= math.pi:
+            raise InputError("max_body_pitch_rate_radps", f"allowed range (0, pi] rad/s, got "
+                                                          f"{max_body_pitch_rate_radps!r}")
+        self.max_body_pitch_rate_radps = None if max_body_pitch_rate_radps is None else \
+            float(max_body_pitch_rate_radps)
         if not isinstance(self.envelope, Envelope):
             raise InputError("envelope", f"an mdo.mission.trajectory.Envelope, got {type(envelope).__name__}")
         self.built = False
@@ -348,6 +356,8 @@ class Mission(NodeControlsMixin):
                 rate = (thf - th0) / g.duration * ca.DM.ones(1, g.n)
             pieces.append(th)
             rate_pieces.append(rate)
+        if self.max_body_pitch_rate_radps is not None:
+            self._limit_body_pitch(rate_pieces)
         return ca.horzcat(*pieces), ca.horzcat(*rate_pieces), guess
 
     def _add_unknowns(self, problem, guess, params) -> dict:
@@ -453,6 +463,7 @@ class Mission(NodeControlsMixin):
         self.rows = {
             "time_s": (time_row, "s"), "altitude_m": (cond.altitude_m, "m"), "speed_mps": (cond.speed_mps, "m/s"),
             "flight_path_angle_rad": (cond.flight_path_angle_rad, "rad"), "body_angle_rad": (self.theta, "rad"),
+            "body_pitch_rate_radps": (cond.pitch_rate_radps, "rad/s"),
             "distance_m": (dist, "m"),
         }
         if self.free.any_free:   # the prescribed profile beside the flown one (mission.csv, mission.png)
