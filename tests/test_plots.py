@@ -327,3 +327,16 @@ def test_design_checks_flag_a_cabin_pitched_beyond_a_passenger_airplanes_envelop
     assert ttw[up]["ok"] and ttw[down]["ok"] and ttw[down]["low"] == -15
     ga = {c["quantity"]: c for c in design_checks(ROOT / "results" / "ga2p")}
     assert ga[up]["ok"] and ga[up]["value"] < 15 and ga[down]["ok"]
+
+
+def test_design_checks_flag_a_cabin_pitching_faster_than_a_take_off_rotation(tmp_path):
+    """The fastest body pitch rate within a segment (``mission.csv`` ``body_pitch_rate_degps``)
+    against 3 deg/s, an airliner's take-off rotation; a folder without the column is not checked."""
+    from mdo.plots.checks import design_checks
+    q = "fastest body pitch rate within a segment"
+    (tmp_path / "mission.csv").write_text("segment,node,body_angle_deg,body_pitch_rate_degps\n"
+                                          "DT,0,29.5,-0.4\nDT,1,20.0,-6.2\n")
+    c = {c["quantity"]: c for c in design_checks(tmp_path)}[q]
+    assert not c["ok"] and c["value"] == pytest.approx(6.2) and c["high"] == pytest.approx(3.0)
+    (tmp_path / "mission.csv").write_text("segment,node,body_angle_deg\nDT,0,29.5\n")
+    assert q not in {c["quantity"] for c in design_checks(tmp_path)}

@@ -30,6 +30,11 @@ constraints).  Each range with its basis:
   normal law, FCOM DSC-27-20-10-20; 25 deg nose-up at low speed).  A tilt-wing flown on a
   prescribed tilt schedule can meet its thrust direction only by pitching the cabin (the TTW on
   Table 5's schedule: 60-67 deg in its approach and descent transitions).
+* the body's pitch rate within the segments at most 3 deg/s (``mission.csv``
+  ``body_pitch_rate_degps``): a passenger airplane's take-off rotation, "in most cases should not
+  exceed 3 degrees per second" (Boeing, Flight Operations Review, 1986; Airbus SOPs).  The steps at
+  segment joins are the prescribed profile's (its acceleration or flight path angle steps) and are
+  not in it.
 * wing loading ``W/S`` in [50, 2000] N/m^2 (``design.json`` TOGW, ``geometry.json``
   reference area): Raymer, *Aircraft Design: A Conceptual Approach*, Table 5.5 (typical
   take-off wing loadings) runs from 6 lb/ft^2 (290 N/m^2, sailplanes) to 40 lb/ft^2
@@ -44,7 +49,7 @@ from pathlib import Path
 import numpy as np
 
 from ..core.units import G0
-from ..mission.profiles import CABIN_ATTITUDE_ENVELOPE_RAD
+from ..mission.profiles import CABIN_ATTITUDE_ENVELOPE_RAD, CABIN_PITCH_RATE_MAX_RADPS
 from ..vehicle.config import PROPELLER_STRUCTURE_CLEARANCE_M, fuselage_gaps_m, fuselage_half_axes
 
 __all__ = ["CHECKS", "design_checks", "write_design_checks", "checks_markdown"]
@@ -65,6 +70,8 @@ CHECKS = {
                                                 "14 CFR 23.925(d)(1): one inch radial to the structure"),
     "most nose-up body attitude": (-90.0, CABIN_ATTITUDE_DEG[1], "deg", _ATTITUDE_BASIS),
     "most nose-down body attitude": (CABIN_ATTITUDE_DEG[0], 90.0, "deg", _ATTITUDE_BASIS),
+    "fastest body pitch rate within a segment": (0.0, round(math.degrees(CABIN_PITCH_RATE_MAX_RADPS), 9), "deg/s",
+                                                 "an airliner's take-off rotation, at most 3 deg/s (Boeing 1986)"),
 }
 
 
@@ -93,6 +100,8 @@ def _values(run: Path) -> dict:
         if "body_angle_deg" in m:
             v["most nose-up body attitude"] = float(np.nanmax(m["body_angle_deg"]))
             v["most nose-down body attitude"] = float(np.nanmin(m["body_angle_deg"]))
+        if "body_pitch_rate_degps" in m:
+            v["fastest body pitch rate within a segment"] = float(np.nanmax(np.abs(m["body_pitch_rate_degps"])))
         if {"thrust_power_W", "thrust_N", "shaft_power_W"} <= set(m):
             v.update(_best_propulsive_efficiency(m))
     gap = _fuselage_clearance(geom)
