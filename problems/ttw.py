@@ -42,8 +42,8 @@ The wing-mounted angle of the transitions (VT, CT1, CT2, AT, DT) is a control to
 (``tilt="control"``, default since 2026-12-07), continuous with the hover and wing-borne segments
 around them and at most 10 deg/s (``WingConfig.max_tilt_rate_degps``), and the cabin stays within a
 passenger airplane's attitude envelope, 15 deg nose-down to 30 deg nose-up at every node
-(``cabin_attitude_bounds_rad``), and pitches at most 3 deg/s within every segment, an airliner's
-take-off rotation (``cabin_pitch_rate_radps``; since 2026-12-07, twenty-second session: before, the
+(``cabin_attitude_bounds_rad``), and pitches at most 3 deg/s within every segment (at the nodes and
+between them, as the tilt's rate), an airliner's take-off rotation (``cabin_pitch_rate_radps``; since 2026-12-07, twenty-second session: before, the
 descent transition pitched the cabin 27 deg nose-down in its last 4.4 s, 6 deg/s, and the vertical
 transition 35 deg nose-up in 2.9 s, 12 deg/s).  At the segment joins the attitude still steps where
 Table 5's profile steps its acceleration (hover to the vertical transition's 0.2 g: 12 deg).  The

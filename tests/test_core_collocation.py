@@ -59,3 +59,16 @@ def test_collocation_object_unit_interval():
 def test_too_few_nodes_is_an_error():
     with pytest.raises(ValueError, match="n >= 2"):
         cgl_nodes(1)
+
+
+def test_the_interpolants_derivative_anywhere_and_the_points_a_rate_limit_holds_at():
+    from mdo.core.collocation import Collocation
+    col = Collocation(6)
+    np.testing.assert_allclose(col.derivative_at(col.s), col.D, atol=1e-12)     # E = D at the nodes
+    s = col.between_nodes(3)
+    assert len(s) == 6 + 5 * 3 and np.all(np.diff(s) > 0) and s[0] == 0.0 and s[-1] == 1.0
+    f = lambda x: x ** 5 - 2 * x ** 3 + x            # noqa: E731  degree 5: exact with 6 nodes
+    np.testing.assert_allclose(col.derivative_at(s) @ f(col.s), 5 * s ** 4 - 6 * s ** 2 + 1, atol=1e-12)
+    # a degree-5 interpolant whose node derivatives stay within 1 can exceed it between them
+    bump = np.array([0.0, 0.0, 0.0, 1.0, 1.0, 1.0])
+    assert np.max(np.abs(col.derivative_at(s) @ bump)) > np.max(np.abs(col.D @ bump))

@@ -340,3 +340,19 @@ def test_design_checks_flag_a_cabin_pitching_faster_than_a_take_off_rotation(tmp
     assert not c["ok"] and c["value"] == pytest.approx(6.2) and c["high"] == pytest.approx(3.0)
     (tmp_path / "mission.csv").write_text("segment,node,body_angle_deg\nDT,0,29.5\n")
     assert q not in {c["quantity"] for c in design_checks(tmp_path)}
+
+
+def test_design_checks_flag_an_optimum_that_hardly_left_its_baseline(tmp_path):
+    """An optimization folder's gain over its ``analysis/`` baseline below 2 %: the TTW robustness
+    start that stopped 1 % below its baseline (158.06 against 159.64 kWh) is flagged, the committed
+    TTW optimum (28 %) is not."""
+    from mdo.plots.checks import design_checks
+    q = "optimization's gain over its baseline"
+    (tmp_path / "analysis").mkdir()
+    for d, mode, f in ((tmp_path, "optimization", 158.06), (tmp_path / "analysis", "analysis", 159.64)):
+        (d / "summary.json").write_text(json.dumps({"mode": mode, "success": True,
+                                                    "objective": {"value": f, "unit": "kWh"}}))
+    c = {c["quantity"]: c for c in design_checks(tmp_path)}[q]
+    assert not c["ok"] and c["value"] == pytest.approx(100 * (1 - 158.06 / 159.64))
+    ttw = {c["quantity"]: c for c in design_checks(ROOT / "results" / "ttw")}[q]
+    assert ttw["ok"] and ttw["value"] > 20

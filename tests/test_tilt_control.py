@@ -130,7 +130,10 @@ def test_the_tilt_wing_flies_its_transitions_tilt_as_a_control():
     m = evtol_mission(v, nodes=3).build(p)
     assert p.groups["wing_tilt continuity"].labels == ["VC/VT", "VT/CT1", "CT1/CT2", "CT2/CL", "RD/AT", "AT/DT",
                                                        "DT/VD"]
-    assert p.groups["wing_tilt rate"].size == 2 * 5 * 3
+    from mdo.core import Collocation
+    between = Collocation(3).between_nodes()                # the nodes and 3 points inside each interval
+    assert p.groups["wing_tilt rate"].size == 2 * 5 * len(between) == 2 * 5 * 9
+    assert p.groups["wing_tilt rate"].labels[:2] == ["VT node 0 rising", "VT s=0.125 rising"]
     var = p.variables["wing_tilt"]
     assert var.shape == (1, 5 * 3)
     np.testing.assert_allclose(var.lower, 0.0)
@@ -241,7 +244,7 @@ def test_a_body_pitch_rate_limit_holds_at_every_free_node():
     q_nat = float(np.max(np.abs(rate0)))
     assert q_nat > math.radians(0.02)                  # the deceleration pitches the body up
     p, m, sol = _decelerate(2.0 * q_nat)               # a loose limit leaves the optimum alone
-    assert sol.success and len(p.groups["body pitch rate"].labels) == 2 * 16
+    assert sol.success and len(p.groups["body pitch rate"].labels) == 2 * 2 * 29    # 8 nodes + 7 x 3 between
     assert sol.objective == pytest.approx(sol0.objective, rel=1e-8)
     p, m, sol = _decelerate(0.5 * q_nat)               # a tight one: the wing's angle cannot follow
     assert not sol.success

@@ -87,6 +87,24 @@ class Collocation:
     def I(self) -> np.ndarray:  # noqa: E743 - the integration matrix is conventionally I
         return integration_matrix(self.n, 0.0, 1.0)
 
+    def derivative_at(self, s_eval) -> np.ndarray:
+        """``E`` with ``(E f)_k = f'(s_k)``, the derivative on [0, 1] of the degree n-1 interpolant
+        of the node values f at the points ``s_eval`` (anywhere in [0, 1]; ``E = D`` at the nodes)."""
+        n = self.n
+        V = C.chebvander(cgl_nodes(n), n - 1)
+        coef = np.linalg.solve(V, np.eye(n))          # column j: Chebyshev coefficients of l_j
+        tau = 2.0 * np.asarray(s_eval, float) - 1.0
+        return 2.0 * np.column_stack([C.chebval(tau, C.chebder(coef[:, j])) for j in range(n)])
+
+    def between_nodes(self, per_interval: int = 3) -> np.ndarray:
+        """The nodes and ``per_interval`` evenly spaced points inside each interval between two
+        nodes, increasing: where a rate limit is held, since the interpolant's derivative between
+        the nodes can exceed its values at them (by 72 % in the TTW's approach transition, 2026-12-07)."""
+        s = self.s
+        inner = [a + (b - a) * (k + 1) / (per_interval + 1) for a, b in zip(s[:-1], s[1:])
+                 for k in range(per_interval)]
+        return np.sort(np.concatenate([s, inner]))
+
     @property
     def weights(self) -> np.ndarray:
         """Clenshaw-Curtis quadrature weights on [0, 1] (sum to 1)."""

@@ -54,8 +54,8 @@ class NodeControlsMixin:
         ``u.only_where`` > 0: equal values at every segment join (the last node of a
         segment and the first of the next are one instant), against the parameter where a
         neighbour keeps it prescribed; and |d(control)/dt| <= ``u.max_rate`` at every node
-        of its segments, ``+-(D u)_j / T - max_rate <= 0`` (D the CGL differentiation
-        matrix on s in [0, 1], T the segment's duration)."""
+        of its segments and between them, ``+-(E u)_k / T - max_rate <= 0`` (``_rate_between_nodes``,
+        T the segment's duration)."""
         if u.only_where is None or int(u.rows) != 1:
             raise InputError(f"unknown {u.name!r}", "replaces/max_rate need only_where and one row")
         if u.replaces is not None and u.replaces not in params:
@@ -80,9 +80,9 @@ class NodeControlsMixin:
         for g, is_on in zip(self._segs, seg_on):
             if not is_on:
                 continue
-            rate = ca.mtimes(row[0, g.node0:g.node0 + g.n], ca.DM(Collocation(g.n).D).T) / g.duration
+            rate, where = self._rate_between_nodes(g, row[0, g.node0:g.node0 + g.n])
             pieces += [rate - u.max_rate, -rate - u.max_rate]
-            labels += [f"{self.labels[g.node0 + j]} {sign}" for sign in ("rising", "falling") for j in range(g.n)]
+            labels += [f"{w} {sign}" for sign in ("rising", "falling") for w in where]
         if pieces:
             problem.constrain(f"{u.name} rate", ca.horzcat(*pieces), kind="<=",
                               scale=float(u.max_rate), unit=f"{u.unit}/s", labels=labels)
@@ -92,21 +92,34 @@ class NodeControlsMixin:
         in the differentiation form (its rows of D start at j = 1); none in the integration form."""
         return [g.node0 for g in self._segs] if self.state_form == "differentiation" else []
 
-    def _limit_body_pitch(self, rate_pieces):
+    def _rate_between_nodes(self, g, row):
+        """The rate of a segment's row of node values (1 x n) at its nodes and between them
+        (``Collocation.between_nodes``): ``(E row)_k / T`` with ``E`` the interpolant's derivative
+        matrix there and T the duration; returns (1 x m rate, m labels)."""
+        col = Collocation(g.n)
+        s = col.between_nodes()
+        rate = ca.mtimes(row, ca.DM(col.derivative_at(s)).T) / g.duration
+        nodes = {round(float(x), 12): j for j, x in enumerate(col.s)}
+        where = [self.labels[g.node0 + nodes[round(float(x), 12)]] if round(float(x), 12) in nodes
+                 else f"{g.segment.name} s={x:.3f}" for x in s]
+        return rate, where
+
+    def _limit_body_pitch(self, theta_pieces):
         """The body's pitch rate limit (``Mission(max_body_pitch_rate_radps=...)``) at every node of
-        the segments whose body angle is free, ``+-(D theta)_j / T - q_max <= 0`` ("body pitch
-        rate"; ``rate_pieces``: per segment the rate, 1 x n).  Within segments only: at a join the
+        the segments whose body angle is free and between them, ``+-(E theta)_k / T - q_max <= 0``
+        ("body pitch rate", ``_rate_between_nodes``; ``theta_pieces``: per segment the body angle,
+        1 x n).  Within segments only: at a join the
         prescribed profile's acceleration or flight path angle steps (hover to the transition's
         0.2 g, a climb to level flight), and the point-mass mission turns the force there by
         stepping the attitude - a manoeuvre shorter than its nodes resolve; with the attitude and a
         tilt both held continuous the join node would have one force control for two equations."""
         q_max = self.max_body_pitch_rate_radps
         rates, labels = [], []
-        for g, rate in zip(self._segs, rate_pieces):
+        for g, theta in zip(self._segs, theta_pieces):
             if g.kin.body_angle is None:
+                rate, where = self._rate_between_nodes(g, theta)
                 rates += [rate - q_max, -rate - q_max]
-                labels += [f"{self.labels[g.node0 + j]} {sign}" for sign in ("nose-up", "nose-down")
-                           for j in range(g.n)]
+                labels += [f"{w} {sign}" for sign in ("nose-up", "nose-down") for w in where]
         if rates:
             self.problem.constrain(f"{self.prefix}body pitch rate", ca.horzcat(*rates), kind="<=", scale=q_max,
                                    unit="rad/s", labels=labels)

@@ -357,7 +357,7 @@ class Mission(NodeControlsMixin):
             pieces.append(th)
             rate_pieces.append(rate)
         if self.max_body_pitch_rate_radps is not None:
-            self._limit_body_pitch(rate_pieces)
+            self._limit_body_pitch(pieces)
         return ca.horzcat(*pieces), ca.horzcat(*rate_pieces), guess
 
     def _add_unknowns(self, problem, guess, params) -> dict:
