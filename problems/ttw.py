@@ -175,7 +175,10 @@ def attitude_into_tilt(run_dir, solution: dict, bounds_rad: tuple) -> dict:
     tilt is a control: the body angle clipped to ``bounds_rad`` and what was cut off added to the
     wing-mounted angle the run flew (``mission.csv``), as ``wing_tilt`` at the nodes whose tilt is a
     control, so that the wing and rotors keep their angle to the flight path and the start stays
-    nearly feasible.  Measured 2026-12-07 from the committed schedule baseline (body up to 64 deg):
+    nearly feasible.  In those segments the attitude is held at its mean, so that the start meets the
+    cabin's pitch-rate limit (``cabin_pitch_rate_radps``): with the clipped attitude alone, the baseline
+    under the limit at the nodes and between them ran to a dual infeasibility of 7e11 in 49
+    iterations (2026-12-07, stopped).  Measured 2026-12-07 from the committed schedule baseline (body up to 64 deg):
     so converted, the baseline with the tilt a control and the cabin envelope converged in 63
     iterations; with the body angle merely pushed inside its bounds it wandered for 168 (stopped)."""
     from mdo.runfolder import read_run
@@ -185,6 +188,9 @@ def attitude_into_tilt(run_dir, solution: dict, bounds_rad: tuple) -> dict:
     theta = np.asarray(body["value"], float).ravel()
     clipped = np.clip(theta, *bounds_rad)
     on = flown["wing_tilt_control"] > 0
+    for seg in np.unique(flown["segment"][on]):   # a level cabin within each transition: no pitch rate
+        k = on & (flown["segment"] == seg)
+        clipped[k] = np.mean(clipped[k])
     tilt = np.radians(flown["wing_mounted_angle_deg"]) + theta - clipped
     body["value"] = [clipped.tolist()]
     solution["variables"] = [v for v in solution["variables"] if v["name"] != "wing_tilt"] + \

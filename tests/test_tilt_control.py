@@ -172,8 +172,9 @@ def test_the_ttw_keeps_its_cabin_in_a_passenger_airplanes_attitude_envelope_by_d
 
 def test_a_schedule_flown_start_hands_its_excess_attitude_to_the_wing_tilt():
     """The relaxed start flies Table 5's tilt schedule; ``attitude_into_tilt`` clips the body angle to
-    the cabin envelope and adds what it cut off to the schedule's wing-mounted angle, so the wing and
-    the rotors keep their angle to the flight path (body + tilt unchanged at every transition node)."""
+    the cabin envelope, holds it level within each transition (its mean there: no pitch rate) and adds
+    what it moved to the schedule's wing-mounted angle, so the wing and the rotors keep their angle to
+    the flight path (body + tilt unchanged at every transition node)."""
     import json
     from mdo.mission.profiles import CABIN_ATTITUDE_ENVELOPE_RAD, evtol_segments
     mod, root = _ttw_problem_file()
@@ -195,8 +196,11 @@ def test_a_schedule_flown_start_hands_its_excess_attitude_to_the_wing_tilt():
     for k, lab in enumerate(tilted):
         i = labels.index(lab)
         assert theta[i] + tilt[k] == pytest.approx(theta0[i] + wma[lab.split()[0]], abs=1e-12)
-    keep = [i for i, lab in enumerate(labels) if lo <= theta0[i] <= hi]
+    keep = [i for i, lab in enumerate(labels) if lo <= theta0[i] <= hi and lab.split()[0] not in wma]
     np.testing.assert_array_equal(theta[keep], theta0[keep])
+    for seg in wma:                                   # level within each transition
+        k = [i for i, lab in enumerate(labels) if lab.split()[0] == seg]
+        assert np.ptp(theta[k]) == 0.0
 
 
 @pytest.mark.parametrize("limits", [False, True])
