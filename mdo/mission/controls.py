@@ -74,18 +74,10 @@ class NodeControlsMixin:
             if gaps:
                 problem.constrain(f"{u.name} continuity", ca.vertcat(*gaps), scale=float(np.max(u.scale)),
                                   unit=u.unit, labels=labels)
-        if u.max_rate is None:
-            return
-        pieces, labels = [], []
-        for g, is_on in zip(self._segs, seg_on):
-            if not is_on:
-                continue
-            rate, where = self._rate_between_nodes(g, row[0, g.node0:g.node0 + g.n])
-            pieces += [rate - u.max_rate, -rate - u.max_rate]
-            labels += [f"{w} {sign}" for sign in ("rising", "falling") for w in where]
-        if pieces:
-            problem.constrain(f"{u.name} rate", ca.horzcat(*pieces), kind="<=",
-                              scale=float(u.max_rate), unit=f"{u.unit}/s", labels=labels)
+        if u.max_rate is not None:
+            self._rate_limit(f"{u.name} rate", [(g, row[0, g.node0:g.node0 + g.n]) for g, is_on in
+                                                zip(self._segs, seg_on) if is_on],
+                             float(u.max_rate), f"{u.unit}/s", ("rising", "falling"))
 
     def _uncollocated_nodes(self) -> list:
         """Nodes whose state derivative enters no defect: the first node of each segment
@@ -104,22 +96,27 @@ class NodeControlsMixin:
                  else f"{g.segment.name} s={x:.3f}" for x in s]
         return rate, where
 
+    def _rate_limit(self, name, rows, max_rate, unit, signs):
+        """``+-(E row)_k / T - max_rate <= 0`` at the nodes of each ``(segment, 1 x n row)`` of
+        ``rows`` and between them (``_rate_between_nodes``), as the group ``name``; ``signs`` name
+        the two directions in the labels."""
+        pieces, labels = [], []
+        for g, row in rows:
+            rate, where = self._rate_between_nodes(g, row)
+            pieces += [rate - max_rate, -rate - max_rate]
+            labels += [f"{w} {sign}" for sign in signs for w in where]
+        if pieces:
+            self.problem.constrain(name, ca.horzcat(*pieces), kind="<=", scale=max_rate, unit=unit,
+                                   labels=labels)
+
     def _limit_body_pitch(self, theta_pieces):
         """The body's pitch rate limit (``Mission(max_body_pitch_rate_radps=...)``) at every node of
-        the segments whose body angle is free and between them, ``+-(E theta)_k / T - q_max <= 0``
-        ("body pitch rate", ``_rate_between_nodes``; ``theta_pieces``: per segment the body angle,
-        1 x n).  Within segments only: at a join the
+        the segments whose body angle is free and between them ("body pitch rate", ``_rate_limit``;
+        ``theta_pieces``: per segment the body angle, 1 x n).  Within segments only: at a join the
         prescribed profile's acceleration or flight path angle steps (hover to the transition's
         0.2 g, a climb to level flight), and the point-mass mission turns the force there by
         stepping the attitude - a manoeuvre shorter than its nodes resolve; with the attitude and a
         tilt both held continuous the join node would have one force control for two equations."""
-        q_max = self.max_body_pitch_rate_radps
-        rates, labels = [], []
-        for g, theta in zip(self._segs, theta_pieces):
-            if g.kin.body_angle is None:
-                rate, where = self._rate_between_nodes(g, theta)
-                rates += [rate - q_max, -rate - q_max]
-                labels += [f"{w} {sign}" for sign in ("nose-up", "nose-down") for w in where]
-        if rates:
-            self.problem.constrain(f"{self.prefix}body pitch rate", ca.horzcat(*rates), kind="<=", scale=q_max,
-                                   unit="rad/s", labels=labels)
+        rows = [(g, th) for g, th in zip(self._segs, theta_pieces) if g.kin.body_angle is None]
+        self._rate_limit(f"{self.prefix}body pitch rate", rows, self.max_body_pitch_rate_radps, "rad/s",
+                         ("nose-up", "nose-down"))
