@@ -1,7 +1,8 @@
-"""Per-node unknowns that exist only where a segment allows them, and controls that take over a
-segment parameter (continuity at the joins, rate limits): a mixin of
+"""Per-node unknowns that exist only where a segment allows them, the body angle, and controls that
+take over a segment parameter (continuity at the joins, rate limits): a mixin of
 :class:`mdo.mission.transcription.Mission` (it reads the mission's node layout, ``self._segs``,
-``self.K``, ``self.labels``, ``self.prefix``, ``self.state_form``).
+``self.K``, ``self.labels``, ``self.prefix``, ``self.state_form``, ``self._guess``, the body angle's
+bounds and pitch-rate limit).
 """
 from __future__ import annotations
 
@@ -15,7 +16,59 @@ __all__ = ["NodeControlsMixin"]
 
 
 class NodeControlsMixin:
-    """Masked unknowns and control continuity/rate of :class:`~mdo.mission.transcription.Mission`."""
+    """Masked unknowns, the body angle and control continuity/rate of
+    :class:`~mdo.mission.transcription.Mission`."""
+
+    def _add_body_angle(self, problem, num, params):
+        """Free nodes' body angle as unknowns, prescribed nodes on their schedule; returns
+        (theta row, pitch-rate row, the vehicle's initial guess)."""
+        K, P, labels = self.K, self.prefix, self.labels
+        free_mask = np.ones(K, dtype=bool)
+        for g in self._segs:
+            if g.kin.body_angle is not None:
+                free_mask[g.node0:g.node0 + g.n] = False
+        theta_guess_in = np.full(K, np.nan)
+        for g in self._segs:   # numeric schedules for the guess (continuity ones filled after the first guess)
+            if g.kin.body_angle is not None and g.kin.body_angle[0] is not None:
+                th0, thf = g.kin.body_angle
+                theta_guess_in[g.node0:g.node0 + g.n] = th0 + (thf - th0) * g.kin.s
+        guess = self._guess(num, params, theta_guess_in)
+        theta_g = np.asarray(guess["body_angle_rad"], float).ravel()
+        for g in self._segs:
+            if g.kin.body_angle is not None and g.kin.body_angle[0] is None:
+                th0 = theta_g[g.node0 - 1] if g.node0 > 0 else 0.0
+                thf = g.kin.body_angle[1]
+                theta_guess_in[g.node0:g.node0 + g.n] = th0 + (thf - th0) * g.kin.s
+        if np.any(~free_mask):
+            guess = self._guess(num, params, theta_guess_in)
+            theta_g = np.where(free_mask, np.asarray(guess["body_angle_rad"], float).ravel(), theta_guess_in)
+        lo_th, hi_th = self.body_angle_bounds_rad
+        n_free = int(free_mask.sum())
+        theta_var = None
+        if n_free:
+            theta_var = problem.variable(f"{P}body_angle", (1, n_free), unit="rad", scale=0.1, lower=lo_th,
+                                         upper=hi_th, init=np.clip(theta_g[free_mask], lo_th, hi_th).reshape(1, -1),
+                                         description="body (pitch) angle at the nodes",
+                                         labels=[l for l, f in zip(labels, free_mask) if f])
+        pieces, rate_pieces = [], []
+        ifree = 0
+        for g in self._segs:
+            if g.kin.body_angle is None:
+                th = theta_var[0, ifree:ifree + g.n]
+                ifree += g.n
+                D = ca.DM(Collocation(g.n).D)
+                rate = ca.mtimes(th, D.T) / g.duration
+            else:
+                th0, thf = g.kin.body_angle
+                if th0 is None:
+                    th0 = pieces[-1][0, -1] if pieces else 0.0
+                th = th0 + (thf - th0) * ca.DM(np.asarray(g.kin.s, float).reshape(1, -1))
+                rate = (thf - th0) / g.duration * ca.DM.ones(1, g.n)
+            pieces.append(th)
+            rate_pieces.append(rate)
+        if self.max_body_pitch_rate_radps is not None:
+            self._limit_body_pitch(pieces)
+        return ca.horzcat(*pieces), ca.horzcat(*rate_pieces), guess
 
     def _masked_unknown(self, problem, u, params, init, col):
         """An unknown that exists only at some nodes: where the segment parameter
