@@ -110,9 +110,9 @@ class Mission(NodeControlsMixin):
     envelope : the :class:`~mdo.mission.trajectory.Envelope` freed segments respect
     legs : lists of consecutive segment names whose ground distance a free trajectory
         keeps, each on its own (default: the whole mission, one leg)
-    max_body_pitch_rate_radps : the body's pitch rate limit (rad/s) at every node of the
-        segments whose body angle is free (``NodeControlsMixin._limit_body_pitch``); None
-        (default): no limit
+    max_body_pitch_rate_radps : the body's pitch rate limit (rad/s) at the nodes of the
+        segments whose body angle is free and between them (``NodeControlsMixin._limit_body_pitch``);
+        None (default): no limit
     """
 
     def __init__(self, vehicle, segments, *, nodes: int = DEFAULT_NODES, state_form: str = "differentiation",
