@@ -34,6 +34,13 @@ def cgl_nodes(n: int, t0: float = -1.0, tf: float = 1.0) -> np.ndarray:
 
 
 @lru_cache(maxsize=64)
+def _lagrange_chebyshev(n: int) -> np.ndarray:
+    """Column j: the Chebyshev coefficients of the j-th Lagrange polynomial of the n CGL nodes."""
+    V = C.chebvander(cgl_nodes(n), n - 1)               # V[i, k] = T_k(tau_i)
+    return np.linalg.solve(V, np.eye(n))
+
+
+@lru_cache(maxsize=64)
 def _unit(n: int):
     tau = cgl_nodes(n)
     w = (-1.0) ** np.arange(n)
@@ -45,8 +52,7 @@ def _unit(n: int):
     np.fill_diagonal(D, 0.0)
     np.fill_diagonal(D, -D.sum(axis=1))
     # Integration: Lagrange basis -> Chebyshev coefficients -> antiderivative.
-    V = C.chebvander(tau, n - 1)                      # V[i, k] = T_k(tau_i)
-    coef = np.linalg.solve(V, np.eye(n))               # column j: Chebyshev coefs of l_j
+    coef = _lagrange_chebyshev(n)
     I = np.empty((n, n))
     for j in range(n):
         anti = C.chebint(coef[:, j], lbnd=-1.0)
@@ -91,15 +97,15 @@ class Collocation:
         """``E`` with ``(E f)_k = f'(s_k)``, the derivative on [0, 1] of the degree n-1 interpolant
         of the node values f at the points ``s_eval`` (anywhere in [0, 1]; ``E = D`` at the nodes)."""
         n = self.n
-        V = C.chebvander(cgl_nodes(n), n - 1)
-        coef = np.linalg.solve(V, np.eye(n))          # column j: Chebyshev coefficients of l_j
+        coef = _lagrange_chebyshev(n)
         tau = 2.0 * np.asarray(s_eval, float) - 1.0
         return 2.0 * np.column_stack([C.chebval(tau, C.chebder(coef[:, j])) for j in range(n)])
 
     def between_nodes(self, per_interval: int = 3) -> np.ndarray:
         """The nodes and ``per_interval`` evenly spaced points inside each interval between two
-        nodes, increasing: where a rate limit is held, since the interpolant's derivative between
-        the nodes can exceed its values at them (by 72 % in the TTW's approach transition, 2026-12-07)."""
+        nodes, increasing (node j at index ``j * (per_interval + 1)``): where a rate limit is held,
+        since the interpolant's derivative between the nodes can exceed its values at them (by 72 %
+        in the TTW's approach transition, 2026-12-07)."""
         s = self.s
         inner = [a + (b - a) * (k + 1) / (per_interval + 1) for a, b in zip(s[:-1], s[1:])
                  for k in range(per_interval)]

@@ -141,12 +141,11 @@ class NodeControlsMixin:
         """The rate of a segment's row of node values (1 x n) at its nodes and between them
         (``Collocation.between_nodes``): ``(E row)_k / T`` with ``E`` the interpolant's derivative
         matrix there and T the duration; returns (1 x m rate, m labels)."""
-        col = Collocation(g.n)
-        s = col.between_nodes()
+        col, per = Collocation(g.n), 3
+        s = col.between_nodes(per)
         rate = ca.mtimes(row, ca.DM(col.derivative_at(s)).T) / g.duration
-        nodes = {round(float(x), 12): j for j, x in enumerate(col.s)}
-        where = [self.labels[g.node0 + nodes[round(float(x), 12)]] if round(float(x), 12) in nodes
-                 else f"{g.segment.name} s={x:.3f}" for x in s]
+        where = [self.labels[g.node0 + k // (per + 1)] if k % (per + 1) == 0 else f"{g.segment.name} s={x:.3f}"
+                 for k, x in enumerate(s)]
         return rate, where
 
     def _rate_limit(self, name, rows, max_rate, unit, signs):

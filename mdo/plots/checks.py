@@ -30,15 +30,16 @@ constraints).  Each range with its basis:
   normal law, FCOM DSC-27-20-10-20; 25 deg nose-up at low speed).  A tilt-wing flown on a
   prescribed tilt schedule can meet its thrust direction only by pitching the cabin (the TTW on
   Table 5's schedule: 60-67 deg in its approach and descent transitions).
-* the body's pitch rate within the segments at most 3 deg/s (``mission.csv``
-  ``body_pitch_rate_degps``): a passenger airplane's take-off rotation, "in most cases should not
+* the body's pitch rate within the segments, at the nodes, at most 3 deg/s (``mission.csv``
+  ``body_pitch_rate_degps``; the limit itself also holds between the nodes): a passenger airplane's take-off rotation, "in most cases should not
   exceed 3 degrees per second" (Boeing, Flight Operations Review, 1986; Airbus SOPs).  The steps at
   segment joins are the prescribed profile's (its acceleration or flight path angle steps) and are
   not in it.
 * an optimization's gain over its own baseline (``summary.json`` of the folder and of its
   ``analysis/``) at least 2 %: ours, not a source.  The committed optima gain 7-28 % (GA-2P, GA-8P,
   X-57, TTW); a TTW robustness start ended 1 % below its baseline at a KKT point on a design-speed
-  bound, 38 % above the best optimum found (``results/robustness/ttw.md``).  A smaller gain is not
+  bound, 38 % above the best optimum found
+  (``results/robustness/earlier_model/ttw_2026-12-07_twenty-first.md``).  A smaller gain is not
   wrong, but it is where a stationary point near the start hides: try other starts
   (``tests/bench/robustness.py``).
 * wing loading ``W/S`` in [50, 2000] N/m^2 (``design.json`` TOGW, ``geometry.json``
