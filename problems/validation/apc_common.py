@@ -39,7 +39,7 @@ from pathlib import Path
 
 import numpy as np
 
-from mdo.core.atmosphere import kinematic_viscosity
+from mdo.core.atmosphere import density, kinematic_viscosity
 from mdo.rotor import RotorGeometry, analyze
 from mdo.rotor.geometry import DATA_DIR
 from mdo.rotor.sections import RotationalAugmentation, _linear_lift, section, section_coefficients
@@ -196,14 +196,14 @@ def apparent_pitch(prop: Prop, iterations: int = 8) -> dict:
         x0, f0, x1 = x1, f1, x1 - f1 * (x1 - x0) / np.where(np.abs(step) > 1e-12, step, 1e-12)
         f1 = model(x1)[0] - d["CT"]
     ct, cp = model(x1)
-    return {"data": d, "extra_deg": x1, "eCP": cp / d["CP"] - 1, "eCP0": model(np.zeros(d.size))[1] / d["CP"] - 1,
+    ct0, cp0 = model(np.zeros(d.size))
+    return {"data": d, "extra_deg": x1, "eCP": cp / d["CP"] - 1, "eCP0": cp0 / d["CP"] - 1, "eCT0": ct0 / d["CT"] - 1,
             "eCT": ct / d["CT"] - 1}
 
 
-def _pitch_lines(prop: Prop) -> list:
-    """The apparent-pitch table: per run and J band, the collective that matches CT and the CP
-    error before and after it."""
-    a = apparent_pitch(prop)
+def _pitch_lines(a: dict) -> list:
+    """The apparent-pitch table of ``a = apparent_pitch(prop)``: per run and J band, the collective
+    that matches CT and the CP error before and after it."""
     d = a["data"]
     lines = ["", "## Apparent pitch: what a rigid blade would need", "",
              "Per run and J band: the extra collective that makes the model's CT equal the measured one (per "
@@ -219,6 +219,80 @@ def _pitch_lines(prop: Prop) -> list:
             f"{100 * np.mean(a['eCP0'][s]):+.0f} -> {100 * np.mean(a['eCP'][s]):+.0f} %")) + " |")
     return lines
 
+
+
+def blade_thrust_N(prop: Prop, d) -> np.ndarray:
+    """Thrust of one blade at the measured points (N, sea-level air): rho n^2 D^4 CT / B."""
+    n = d["rpm"] / 60.0
+    return float(density(0.0)) * n * n * prop.diameter_m ** 4 * d["CT"] / prop.blades
+
+
+def _line_fit(x, y) -> tuple:
+    """Least-squares y = a + b x: (a, b, R^2, rms of the residual)."""
+    A = np.c_[np.ones_like(x), x]
+    (a, b), *_ = np.linalg.lstsq(A, y, rcond=None)
+    r = y - A @ np.array([a, b])
+    return float(a), float(b), float(1.0 - r.var() / y.var()), float(r.std())
+
+
+def load_pitch(prop: Prop, a: dict) -> dict:
+    """Does the apparent pitch follow the blade's load?  A blade that twists under its air load
+    (nose-up where the load acts ahead of the section's shear centre) gains pitch in proportion
+    to that load, a per-propeller property (its torsional stiffness); a section or Reynolds-number
+    error is shared by every propeller on those sections.  Fits of the apparent pitch of
+    ``a = apparent_pitch(prop)`` against the thrust per blade, the Reynolds number at 0.75 R and
+    n^2 (centrifugal loads); and the what-if: the model with the fitted law's pitch at every point,
+    fitted on all runs and, as a prediction, on all but the fastest third of the runs."""
+    d, y = a["data"], a["extra_deg"]
+    n = d["rpm"] / 60.0
+    rot = prop.rotor()
+    c75 = float(np.interp(0.75, rot.r_over_R, rot.chord_over_R)) * rot.radius_m
+    w75 = np.hypot(d["J"] * n * prop.diameter_m, math.pi * n * 0.75 * prop.diameter_m)
+    load = blade_thrust_N(prop, d)
+    fits = {("thrust per blade", "deg per N"): _line_fit(load, y),
+            ("Reynolds number at 0.75 R", "deg per 1e5"):
+                _line_fit(w75 * c75 / float(kinematic_viscosity(0.0)) / 1e5, y),
+            ("n^2 (centrifugal load)", "deg per (1000 rpm)^2"): _line_fit((d["rpm"] / 1000.0) ** 2, y)}
+    runs = np.unique(d["rpm"])
+    fastest = runs[len(runs) - max(1, len(runs) // 3):]      # the fastest third of the runs, held out
+    low = ~np.isin(d["rpm"], fastest)
+    laws = {"all runs": _line_fit(load, y),
+            "the slower runs": _line_fit(load[low], y[low])}
+    whatif = {}
+    for name, (c0, c1, _, _) in laws.items():
+        r = analyze(rot, omega_radps=2 * math.pi * n, v_axial_mps=d["J"] * n * prop.diameter_m,
+                    n_stations=N_STATIONS, pitch_rad=rot.pitch_offset_rad + np.radians(c0 + c1 * load))
+        whatif[name] = (np.asarray(r["CT"]).ravel() / d["CT"] - 1, np.asarray(r["CP"]).ravel() / d["CP"] - 1)
+    return {"data": d, "fits": fits, "laws": laws, "whatif": whatif, "held_out_rpm": fastest}
+
+
+def load_pitch_lines(prop: Prop, a: dict) -> list:
+    """The summary's section on ``load_pitch``."""
+    lp = load_pitch(prop, a)
+    d = lp["data"]
+    lines = ["", "## Apparent pitch against the blade's load", "",
+             "A blade that twists under its air load gains pitch in proportion to that load, by its own "
+             "torsional stiffness; an error of the sections or of their Reynolds number is shared by every "
+             "propeller on them.  Straight-line fits of the apparent pitch above (every point, J <= "
+             f"{J_LIMIT}) against:", "", "| against | slope | intercept | R^2 | rms left |", "|---|---:|---:|---:|---:|"]
+    for (name, unit), (c0, c1, r2, rms) in lp["fits"].items():
+        lines.append(f"| {name} | {c1:.3g} {unit} | {c0:+.2f} deg | {r2:.2f} | {rms:.2f} deg |")
+    lines += ["", "What-if, not the model (it would be a per-propeller fit): the rigid-blade model with the "
+              "pitch of the thrust law at every point, mean |error| per run.  The second law is fitted without "
+              "the fastest third of the runs (" + ", ".join(f"{int(r)}" for r in lp["held_out_rpm"])
+              + " rpm) and predicts them:", "",
+              "| runs | model CT / CP | " + " | ".join(f"law of {k} CT / CP" for k in lp["whatif"]) + " |",
+              "|---|---|" + "---|" * len(lp["whatif"])]
+    eCT0, eCP0 = a["eCT0"], a["eCP0"]
+    for rpm in np.unique(d["rpm"]):
+        s = d["rpm"] == rpm
+        cells = [f"{100 * np.mean(np.abs(ct[s])):.1f} / {100 * np.mean(np.abs(cp[s])):.1f} %"
+                 for ct, cp in lp["whatif"].values()]
+        lines.append(f"| {int(rpm)} rpm | {100 * np.mean(np.abs(eCT0[s])):.1f} / {100 * np.mean(np.abs(eCP0[s])):.1f} % | "
+                     + " | ".join(cells) + " |")
+    laws = "; ".join(f"{k}: {c0:+.2f} deg {c1:+.3f} deg per N" for k, (c0, c1, _, _) in lp["laws"].items())
+    lines += ["", f"Laws: {laws}."]
+    return lines
 
 TREND_J = (0.3, 0.45, 0.55, 0.65)
 
@@ -344,7 +418,9 @@ def write_outputs(prop: Prop, out_dir: Path = OUT_DIR, with_sensitivity: bool = 
             lines.append(f"| {row[0]} | " + " | ".join(f"{100 * v:+.1f} %" for v in row[1:]) + " |")
     lines += _band_lines(main)
     if with_sensitivity:
-        lines += _pitch_lines(prop)
+        a = apparent_pitch(prop)
+        lines += _pitch_lines(a)
+        lines += load_pitch_lines(prop, a)
         lines += drag_lines(prop)
     lines += _trend_lines(reynolds_trend(prop, main))
     lines += ["", f"Files: {stem}.png, {stem}_errors.csv (every point), {stem}_static.csv."]
