@@ -79,6 +79,13 @@ def steps_of(problem) -> list:
                         for i, (f, w, o) in enumerate(rest) if i > 0]
 
 
+# Where a problem's step starts: its committed baseline's solution (the variables it shares; the TTW's cold
+# start, a continuation of three solves, wandered for the mass calibration's sensitivity: its second relaxed step
+# was at iteration 154 with a primal infeasibility of 9.5 after 6 minutes, stopped; 2026-12-07).  None: the
+# problem's own initial guess.
+WARM_START = {"ttw": ROOT / "results" / "ttw" / "analysis" / "solution.json"}
+
+
 def sensitivities_of(problem) -> list:
     return TTW_SENSITIVITY if problem == "ttw" else SENSITIVITY
 
@@ -105,8 +112,10 @@ def _solve(problem, dest: Path, options: list) -> None:
     """``mdo run problems/<problem>.py --analysis`` into ``dest`` with the -o ``options``.  A converged
     folder is pruned to ``KEEP``; one that did not converge keeps every file (its logs name the cause)
     and the command's last output is printed."""
+    warm = WARM_START.get(problem)
+    start = [] if warm is None else ["--warm-start", str(warm.relative_to(ROOT)), "--warm-start-partial"]
     cmd = [sys.executable, "-m", "mdo.cli", "run", f"problems/{problem}.py", "--analysis", "--quiet",
-           "--out", str(dest), "--force", *options]
+           "--out", str(dest), "--force", *start, *options]
     print(" ".join(cmd[2:]), flush=True)
     r = subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True)
     summary = dest / "summary.json"
