@@ -89,13 +89,12 @@ def figures(run: Path) -> dict:
             v = _group_value(row, suffix)
             if v is not None:
                 out[name] = v
-        out["_CL"] = float(row["CL"])
-        out["_e"] = float(row["CL"]) ** 2 / max(cdi, 1e-12)    # pi A e, for (L/D)max below
+        out["_piAe"] = float(row["CL"]) ** 2 / max(cdi, 1e-12)    # CL^2/CDi = pi A e, for (L/D)max below
     summary = json.loads((run / "summary.json").read_text()) if (run / "summary.json").exists() else {}
     if "battery_mass_kg" in summary and "togw_kg" in summary:
         out["battery mass fraction"] = summary["battery_mass_kg"] / summary["togw_kg"]
     if "CD0" in out:
-        out["_LDmax"] = 0.5 * math.sqrt(out["_e"] / out["CD0"])
+        out["_LDmax"] = 0.5 * math.sqrt(out["_piAe"] / out["CD0"])
     return out
 
 

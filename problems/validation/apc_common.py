@@ -221,6 +221,15 @@ def _pitch_lines(a: dict) -> list:
 
 
 
+def reynolds_75(prop: Prop, rot, J, rpm):
+    """Chord Reynolds number at 0.75 R (sea-level air) from the unaccelerated relative speed,
+    sqrt((J n D)^2 + (0.75 pi n D)^2); numbers or arrays."""
+    n = np.asarray(rpm, float) / 60.0
+    c75 = float(np.interp(0.75, rot.r_over_R, rot.chord_over_R)) * rot.radius_m
+    w75 = np.hypot(np.asarray(J, float) * n * prop.diameter_m, 0.75 * math.pi * n * prop.diameter_m)
+    return w75 * c75 / float(kinematic_viscosity(0.0))
+
+
 def blade_thrust_N(prop: Prop, d) -> np.ndarray:
     """Thrust of one blade at the measured points (N, sea-level air): rho n^2 D^4 CT / B."""
     n = d["rpm"] / 60.0
@@ -246,12 +255,10 @@ def load_pitch(prop: Prop, a: dict) -> dict:
     d, y = a["data"], a["extra_deg"]
     n = d["rpm"] / 60.0
     rot = prop.rotor()
-    c75 = float(np.interp(0.75, rot.r_over_R, rot.chord_over_R)) * rot.radius_m
-    w75 = np.hypot(d["J"] * n * prop.diameter_m, math.pi * n * 0.75 * prop.diameter_m)
     load = blade_thrust_N(prop, d)
     fits = {("thrust per blade", "deg per N"): _line_fit(load, y),
             ("Reynolds number at 0.75 R", "deg per 1e5"):
-                _line_fit(w75 * c75 / float(kinematic_viscosity(0.0)) / 1e5, y),
+                _line_fit(reynolds_75(prop, rot, d["J"], d["rpm"]) / 1e5, y),
             ("n^2 (centrifugal load)", "deg per (1000 rpm)^2"): _line_fit((d["rpm"] / 1000.0) ** 2, y)}
     runs = np.unique(d["rpm"])
     fastest = runs[len(runs) - max(1, len(runs) // 3):]      # the fastest third of the runs, held out
@@ -304,8 +311,6 @@ def reynolds_trend(prop: Prop, m: dict) -> list:
     angles at every rpm, so what changes along a column is the Reynolds number (and
     the tip Mach number, below 0.25 here): the trend the sections' polars must carry."""
     d, rot = m["data"], m["rotor"]
-    c75 = float(np.interp(0.75, rot.r_over_R, rot.chord_over_R)) * rot.radius_m
-    nu = float(kinematic_viscosity(0.0))
     rows = []
     for J in TREND_J:
         for rpm in np.unique(d["rpm"]):
@@ -315,8 +320,7 @@ def reynolds_trend(prop: Prop, m: dict) -> list:
             n = rpm / 60.0
             r = analyze(rot, omega_radps=np.array([2 * math.pi * n]), v_axial_mps=np.array([J * n * prop.diameter_m]),
                         n_stations=N_STATIONS, pitch_rad=rot.pitch_offset_rad)
-            w75 = math.hypot(J * n * prop.diameter_m, 2 * math.pi * n * 0.75 * prop.diameter_m / 2)
-            rows.append((J, int(rpm), w75 * c75 / nu,
+            rows.append((J, int(rpm), float(reynolds_75(prop, rot, J, rpm)),
                          float(np.interp(J, d["J"][s], d["CT"][s])), float(np.ravel(r["CT"])[0]),
                          float(np.interp(J, d["J"][s], d["CP"][s])), float(np.ravel(r["CP"])[0])))
     return rows
