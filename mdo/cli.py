@@ -104,6 +104,8 @@ def _cmd_run(args) -> int:
     if args.max_iter is not None:
         args.max_iter = parse_int("--max-iter", args.max_iter, 0, 100000)
     options = dict(_parse_option(o) for o in (args.option or []))
+    if args.threads is not None:   # the whole run's numeric work, not only the Hessian (mdo.core.parallel)
+        os.environ["MDO_THREADS"] = str(args.threads)
     out = Path(args.out or default_out_dir(args.problem, analysis=args.analysis))
     ws_data = None
     if args.warm_start is not None:   # validated before anything is created
@@ -383,8 +385,9 @@ def build_parser() -> argparse.ArgumentParser:
                           "(default); full: the same matrix by one colouring of all variables (slower); "
                           "limited-memory: IPOPT's L-BFGS approximation")
     run.add_argument("--threads", type=int, choices=(1, 2), default=None,
-                     help="threads for the exact Hessian, computed in two parts (default: MDO_THREADS, else 2 "
-                          "on a machine with two or more cores); the same matrix to the bit, less wall time")
+                     help="threads for the exact Hessian, computed in two parts, and for the initial guess's numeric "
+                          "BEMT (default: MDO_THREADS, else 2 on a machine with two or more cores); the same "
+                          "numbers to the bit, less wall time")
     run.set_defaults(func=_cmd_run)
 
     chk = sub.add_parser("check", help="check a run folder against its limits (exit 1 if one is exceeded)",

@@ -43,3 +43,35 @@ def test_second_build_reuses_the_rotor_guesses_and_is_identical():
     assert np.all(w2 > 0)
     w3 = guess.omega_for_thrust(gm, 1.1 * T, *args)
     assert np.all(w3 > w2)                                      # more thrust, more speed: recomputed
+
+
+def test_climbing_scan_brackets_the_lowest_speed_and_threads_change_no_number(monkeypatch):
+    """The rotor-speed search climbs its grid only as far as each node needs: its answer is
+    the root in the interval of the lowest grid speed whose thrust reaches T1 (the whole
+    grid evaluated here as the reference), and the numeric BEMT split over two threads gives
+    the same numbers to the bit."""
+    seen = []
+    orig = guess._omega_for_thrust
+    monkeypatch.setattr(guess, "_omega_for_thrust", lambda gm, *a: seen.append(gm) or orig(gm, *a))
+    guess._OMEGA_CACHE.clear()
+    load_problem_file("problems/ga2p.py", analysis=True)
+    monkeypatch.setattr(guess, "_omega_for_thrust", orig)
+    gm = seen[0]
+    T = np.array([300.0, 900.0, 1500.0, 2600.0])
+    args = (np.array([20.0, 45.0, 60.0, 70.0]), np.zeros(4), np.array([0.0, 300.0, 900.0, 2000.0]), np.zeros(4))
+    guess._OMEGA_CACHE.clear()
+    monkeypatch.setenv("MDO_THREADS", "1")
+    w1 = guess._omega_for_thrust(gm, T, *args)
+    monkeypatch.setenv("MDO_THREADS", "2")
+    w2 = guess._omega_for_thrust(gm, T, *args)
+    assert np.array_equal(w1, w2)
+    grid = gm.omega_design * np.linspace(0.05, 2.5, 25)
+    K = T.size
+    full = np.asarray(guess.bemt_numeric(gm, np.repeat(grid, K), *(np.tile(a, grid.size) for a in args))
+                      ["thrust_N"], float).reshape(grid.size, K)
+    for k in range(K):
+        j = int(np.argmax(full[:, k] >= T[k]))
+        assert full[j, k] >= T[k] > full[j - 1, k] and j > 0
+        assert grid[j - 1] < w1[k] <= grid[j]
+    Tw = np.asarray(guess.bemt_numeric(gm, w1, *args)["thrust_N"], float).ravel()
+    assert np.allclose(Tw, T, rtol=1e-9)

@@ -8,6 +8,7 @@ import os
 import signal
 from dataclasses import dataclass
 
+from ..core.parallel import check_threads, default_threads  # noqa: F401 (re-exported)
 from ..core.signals import SignalInterrupt
 
 __all__ = ["DivergenceWatch", "HESSIAN_CHOICES", "check_threads", "default_threads", "INTERRUPT_STATUS",
@@ -16,28 +17,6 @@ __all__ = ["DivergenceWatch", "HESSIAN_CHOICES", "check_threads", "default_threa
 
 #: ``Problem.solve(hessian=...)``: exact (split by structure), exact (one colouring), quasi-Newton
 HESSIAN_CHOICES = ("exact", "full", "limited-memory")
-
-
-def default_threads() -> int:
-    """Threads for the exact Hessian (:mod:`mdo.nlp.threads`): ``MDO_THREADS`` if set,
-    else 2 on a machine with two or more cores, else 1.  Only 1 and 2 mean something:
-    the Hessian has two parts."""
-    env = os.environ.get("MDO_THREADS")
-    if env is not None and env.strip():
-        return check_threads(env, "MDO_THREADS")
-    return 2 if (os.cpu_count() or 1) >= 2 else 1
-
-
-def check_threads(value, field: str = "threads") -> int:
-    """``value`` as 1 or 2, else ``InputError`` naming ``field``."""
-    from ..core.errors import InputError
-    try:
-        n = int(value)
-    except (TypeError, ValueError):
-        n = None
-    if n not in (1, 2) or str(value).strip() not in ("1", "2"):
-        raise InputError(field, f"1 or 2 (threads for the Hessian), got {value!r}")
-    return n
 
 
 # status of a solve stopped by a signal -> (signal name, conventional exit code 128 + signum)

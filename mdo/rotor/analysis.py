@@ -39,6 +39,7 @@ import numpy as np
 
 from ..core.atmosphere import check_altitude, density, dynamic_viscosity, speed_of_sound
 from ..core.errors import InputError
+from ..core.parallel import default_threads
 from .bemt import FULL_OUTPUTS, INPUT_NAMES, PHI_MAX_RAD, _elements, _symbols, bemt_function, station_physics
 from .geometry import RotorGeometry, placed_stations
 from .sections import section as make_section
@@ -230,6 +231,9 @@ def solve_phi(sec, inputs: dict, n_stations: int = 20, n_azimuth: int = 1, *, ti
     n, m = n_stations, n_azimuth
     arr, K = _broadcast_inputs(inputs, n)
     f = point_solver(sec, n, m, tip_loss=tip_loss, hub_loss=hub_loss, hub_fraction=hub_fraction)
+    threads = default_threads()
+    if threads > 1 and K > 1:   # the points split over the threads: each point's numbers unchanged
+        f = f.map(K, "thread", threads)
     out = f(**{k: arr[k] for k in f.name_in()})
     phi = np.array(out["phi_rad"]).reshape(n * m, K)
     res = np.array(out["residual"]).reshape(n * m, K)
