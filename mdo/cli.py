@@ -96,6 +96,7 @@ def _cmd_run(args) -> int:
     """``mdo run``: check the warm-start file, take the output folder (lock, staging
     sibling, writable) before anything is built, solve the stage(s) into the staging
     folder, move it into place (see ``mdo.nlp.run.RunFolder``)."""
+    from .core.parallel import threads_set_to
     from .nlp.problem import WarmStartError, read_solution
     from .nlp.run import ResultWriteError, RunError, RunFolder, default_out_dir
 
@@ -104,8 +105,6 @@ def _cmd_run(args) -> int:
     if args.max_iter is not None:
         args.max_iter = parse_int("--max-iter", args.max_iter, 0, 100000)
     options = dict(_parse_option(o) for o in (args.option or []))
-    if args.threads is not None:   # the whole run's numeric work, not only the Hessian (mdo.core.parallel)
-        os.environ["MDO_THREADS"] = str(args.threads)
     out = Path(args.out or default_out_dir(args.problem, analysis=args.analysis))
     ws_data = None
     if args.warm_start is not None:   # validated before anything is created
@@ -118,7 +117,8 @@ def _cmd_run(args) -> int:
         signal.signal(signal.SIGTERM, raise_interrupt)   # timeout, job schedulers: as Ctrl-C, exit 143
     folder = RunFolder(out, args.force).open()
     try:
-        return _run_stages(args, options, folder, ws_data, _Progress(args.quiet))
+        with threads_set_to(args.threads):   # the whole run's numeric work, not only the Hessian
+            return _run_stages(args, options, folder, ws_data, _Progress(args.quiet))
     except ResultWriteError:
         folder.keep_incomplete()
         raise

@@ -74,3 +74,22 @@ def test_thread_count_is_checked(monkeypatch):
     monkeypatch.setenv("MDO_THREADS", "1")
     assert default_threads() == 1
     assert check_threads("2") == 2
+
+
+def test_threads_set_for_a_run_are_restored_after_it(monkeypatch):
+    """``mdo run --threads`` sets MDO_THREADS for its run only (the guess's numeric BEMT reads
+    it too), and puts back what was there."""
+    from mdo.core.parallel import threads_set_to
+    monkeypatch.delenv("MDO_THREADS", raising=False)
+    with threads_set_to(1):
+        assert default_threads() == 1
+    assert "MDO_THREADS" not in __import__("os").environ
+    monkeypatch.setenv("MDO_THREADS", "2")
+    with threads_set_to(1):
+        assert default_threads() == 1
+    assert default_threads() == 2
+    with threads_set_to(None):
+        assert default_threads() == 2
+    with pytest.raises(InputError, match="threads"):
+        with threads_set_to(3):
+            pass

@@ -4,11 +4,12 @@ numeric BEMT's operating points, :func:`mdo.rotor.analysis.solve_phi`).  ``mdo r
 --threads`` sets it for the whole run; a sweep's Dask workers keep one each."""
 from __future__ import annotations
 
+import contextlib
 import os
 
 from .errors import InputError
 
-__all__ = ["check_threads", "default_threads"]
+__all__ = ["check_threads", "default_threads", "threads_set_to"]
 
 
 def default_threads() -> int:
@@ -27,5 +28,22 @@ def check_threads(value, field: str = "threads") -> int:
     except (TypeError, ValueError):
         n = None
     if n not in (1, 2) or str(value).strip() not in ("1", "2"):
-        raise InputError(field, f"1 or 2 (threads for the Hessian), got {value!r}")
+        raise InputError(field, f"1 or 2 (threads for the Hessian and the numeric BEMT), got {value!r}")
     return n
+
+
+@contextlib.contextmanager
+def threads_set_to(n: int | None):
+    """``MDO_THREADS`` set to ``n`` inside the block (nothing changed for None), restored after."""
+    if n is None:
+        yield
+        return
+    before = os.environ.get("MDO_THREADS")
+    os.environ["MDO_THREADS"] = str(check_threads(n))
+    try:
+        yield
+    finally:
+        if before is None:
+            os.environ.pop("MDO_THREADS", None)
+        else:
+            os.environ["MDO_THREADS"] = before
