@@ -65,13 +65,13 @@ def test_climbing_scan_brackets_the_lowest_speed_and_threads_change_no_number(mo
     monkeypatch.setenv("MDO_THREADS", "2")
     w2 = guess._omega_for_thrust(gm, T, *args)
     assert np.array_equal(w1, w2)
-    grid = gm.omega_design * np.linspace(0.05, 2.5, 25)
+    grid = guess.speed_grid(gm)
     K = T.size
     full = np.asarray(guess.bemt_numeric(gm, np.repeat(grid, K), *(np.tile(a, grid.size) for a in args))
                       ["thrust_N"], float).reshape(grid.size, K)
     for k in range(K):
         j = int(np.argmax(full[:, k] >= T[k]))
-        assert full[j, k] >= T[k] > full[j - 1, k] and j > 0
+        assert j > 0 and full[j, k] >= T[k] > full[j - 1, k]
         assert grid[j - 1] < w1[k] <= grid[j]
     Tw = np.asarray(guess.bemt_numeric(gm, w1, *args)["thrust_N"], float).ravel()
     assert np.allclose(Tw, T, rtol=1e-9)

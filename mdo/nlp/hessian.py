@@ -31,7 +31,7 @@ import numpy as np
 from ..core.errors import InputError
 from .threads import nonzero_index, scatter, two_thread_sum, upper_entries
 
-__all__ = ["HESSIAN_KINDS", "constraint_jacobian_function", "general_rows", "global_variables",
+__all__ = ["HESSIAN_KINDS", "constraint_jacobian_function", "general_rows", "global_variables", "lagrangian",
            "lagrangian_hessian_functions"]
 
 HESSIAN_KINDS = ("full", "split")
@@ -74,6 +74,18 @@ def general_rows(x, p, g) -> np.ndarray:
     return np.flatnonzero(~((per_row == 1) & ~nonlinear))
 
 
+def lagrangian(problem, simple_bounds: bool = True) -> tuple:
+    """``(x, p, lam_f, lam_g, L)``: the solver's variables and parameters, the multiplier
+    symbols and ``L = lam_f f + lam_g' g`` over the general rows (:func:`general_rows`) when
+    the solver detects simple bounds, over every row otherwise."""
+    opti = problem.opti
+    x, g, f, p = opti.x, opti.g, opti.f, opti.p
+    if simple_bounds:
+        g = g[[int(i) for i in general_rows(x, p, g)]]
+    lam_f, lam_g = ca.MX.sym("lam_f"), ca.MX.sym("lam_g", g.numel())
+    return x, p, lam_f, lam_g, lam_f * f + (ca.dot(lam_g, g) if g.numel() else 0)
+
+
 def lagrangian_hessian_functions(problem, kind: str = "split", *, simple_bounds: bool = True,
                                  skip_fixed: bool = True, threads: int = 1) -> ca.Function:
     """``nlp_hess_l(x, p, lam_f, lam_g) -> triu(H)`` of ``problem``'s Opti.
@@ -88,12 +100,7 @@ def lagrangian_hessian_functions(problem, kind: str = "split", *, simple_bounds:
     thread (:mod:`mdo.nlp.threads`; the same matrix)."""
     if kind not in HESSIAN_KINDS:
         raise InputError("hessian", f"one of {', '.join(HESSIAN_KINDS)}, got {kind!r}")
-    opti = problem.opti
-    x, g, f, p = opti.x, opti.g, opti.f, opti.p
-    if simple_bounds:
-        g = g[[int(i) for i in general_rows(x, p, g)]]
-    lam_f, lam_g = ca.MX.sym("lam_f"), ca.MX.sym("lam_g", g.numel())
-    L = lam_f * f + (ca.dot(lam_g, g) if g.numel() else 0)
+    x, p, lam_f, lam_g, L = lagrangian(problem, simple_bounds)
     glob = {v.name for v in global_variables(problem)}
     if kind == "full" or not glob or len(glob) == len(problem.variables):
         H = ca.hessian(L, x)[0]          # nothing to split

@@ -213,6 +213,11 @@ def omega_for_thrust(gm, T1, v_ax, v_ip, h, pitch, iterations=40, n_azimuth=1, r
     return hit.copy()
 
 
+def speed_grid(gm) -> np.ndarray:
+    """The rotor speeds [rad/s] the rotor-speed search climbs: 0.05-2.5 x the design speed."""
+    return gm.omega_design * np.linspace(0.05, 2.5, 25)
+
+
 def _omega_for_thrust(gm, T1, v_ax, v_ip, h, pitch, iterations=40, n_azimuth=1, rtol=1e-10):
     """Rotor speed giving thrust ``T1`` per rotor at each node: a scan for the
     lowest speed whose thrust reaches T1 (thrust need not be monotonic in speed
@@ -220,7 +225,7 @@ def _omega_for_thrust(gm, T1, v_ax, v_ip, h, pitch, iterations=40, n_azimuth=1, 
     falsi in that interval (Dowell & Jarratt, BIT 11, 1971: superlinear, and it keeps
     the bracket), to ``|T - T1| <= rtol T1`` at every node (about 6-8 BEMT solves
     where 22 bisection steps were needed for the same rotor speed)."""
-    grid = gm.omega_design * np.linspace(0.05, 2.5, 25)
+    grid = speed_grid(gm)
     K = T1.size
     # the scan climbs the grid and stops at each node once its thrust reaches T1: the
     # same bracket as the whole grid's, with the speeds above it never evaluated (GA-2P:

@@ -81,12 +81,9 @@ def main():
 
 def parts(p, x0, par, lam, args):
     """Each part of the split Hessian alone, and R's two AD modes (module docstring)."""
-    from mdo.nlp.hessian import general_rows, global_variables
+    from mdo.nlp.hessian import general_rows, global_variables, lagrangian
     opti = p.opti
-    x, pp = opti.x, opti.p
-    g = opti.g[[int(i) for i in general_rows(x, pp, opti.g)]]
-    lam_f, lam_g = ca.MX.sym("lam_f"), ca.MX.sym("lam_g", g.numel())
-    L = lam_f * opti.f + ca.dot(lam_g, g)
+    x, pp, lam_f, lam_g, L = lagrangian(p)
     glob = [v for v in global_variables(p) if not v.frozen]
     names = {v.name for v in glob}
     Y = ca.veccat(*[v.scaled for v in p.variables.values() if v.name not in names])
@@ -105,7 +102,7 @@ def parts(p, x0, par, lam, args):
     run("node_block_H_yy", ca.hessian(L, Y)[0])
     R = run("global_rows_R", ca.jacobian(ca.gradient(L, D), ca.vertcat(Y, D)))
     Rt = run("R_forward_over_reverse", ca.jacobian(ca.gradient(L, ca.vertcat(Y, D)), D).T)
-    run("constraint_jacobian", ca.jacobian(g, x))
+    run("constraint_jacobian", ca.jacobian(opti.g[[int(i) for i in general_rows(x, pp, opti.g)]], x))
     print(f"R's two modes: max abs difference {np.max(np.abs(R - Rt)):.2e} of {np.max(np.abs(R)):.2e}")
     at = 0
     for v in glob if args.per_global else []:
